@@ -1,0 +1,184 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/elastic_body.h>
+#include <frictional_contact/friction_cone.h>
+#include <frictional_contact/input.h>
+#include <frictional_contact/obstacle/interface.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The contact candidate nodes of this MPI rank and the paper's operators
+   * on them. For candidate j (a vertex on a contact boundary that is not
+   * fully fixed), the column block T_j = [t_n,j, T_t,j] of T maps the
+   * local reaction r_j = (r_n, r_t) to nodal forces, and T_j^T maps a
+   * displacement to its normal and tangential parts at the node. t_n,j is
+   * the unit vector pointing into the obstacle (minus the obstacle's outward
+   * normal), so that the gap after a displacement du is g_j - t_n,j^T du;
+   * T_t,j holds dim-1 orthonormal tangents. Components held by a fixed
+   * boundary are left out of T_j (they are not unknowns).
+   *
+   * Each candidate is owned by the rank owning its dofs, and only that rank
+   * stores it: T and T^T act on locally owned vector entries only, without
+   * communication.
+   */
+  template <int dim>
+  class ContactOperator
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads the subsection "Contact" and creates the obstacle.
+    ContactOperator(ParameterHandler &prm, const BoundaryNames &names);
+
+    /// Whether the scene has a contact boundary at all.
+    bool
+    active() const
+    {
+      return !contact_boundaries.empty();
+    }
+
+    /**
+     * Finds the candidates of @p body on the contact boundaries and builds
+     * their frames and initial gaps (at the reference configuration).
+     * Throws an InputError if a contact boundary has no candidate.
+     */
+    void
+    setup(const ElasticBody<dim> &body, const BoundaryNames &names);
+
+    /// Number of candidates on this rank.
+    unsigned int
+    n_local() const
+    {
+      return nodes.size();
+    }
+
+    /// Number of candidates on all ranks (the paper's c).
+    types::global_dof_index
+    n_candidates() const
+    {
+      return n_global;
+    }
+
+    /// The Cartesian components of the (non-ghosted) vector @p u at node j.
+    Tensor<1, dim>
+    nodal_value(const unsigned int j, const Vector &u) const
+    {
+      const double  *values = u.begin();
+      Tensor<1, dim> u_j;
+      for (unsigned int c = 0; c < dim; ++c)
+        u_j[c] = values[nodes[j].local_dofs[c]];
+      return u_j;
+    }
+
+    /// T_j^T u: normal part (component 0) and tangential parts of @p u at j.
+    Tensor<1, dim>
+    local_part(const unsigned int j, const Vector &u) const
+    {
+      return frame_transpose(j, nodal_value(j, u));
+    }
+
+    /// f = T r for the reactions @p r of the local candidates.
+    void
+    apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const;
+
+    /// Gaps before the increment, g_j (length).
+    const std::vector<double> &
+    gaps() const
+    {
+      return gap;
+    }
+
+    /// The largest singular value of T, computed from the nodal blocks.
+    double
+    largest_singular_value() const;
+
+    /// max_j |T_j^T T_j - I| (0 for orthonormal frames on unfixed nodes).
+    double
+    orthonormality_defect() const;
+
+    /// Global index of the x-displacement dof of candidate j.
+    types::global_dof_index
+    first_dof(const unsigned int j) const
+    {
+      return nodes[j].first_dof;
+    }
+
+    /// Signed distance from @p point to the obstacle (> 0 outside).
+    double
+    distance_to_obstacle(const Point<dim> &point) const
+    {
+      return obstacle->signed_distance(point);
+    }
+
+    /// Reference position of candidate j.
+    const Point<dim> &
+    position(const unsigned int j) const
+    {
+      return nodes[j].position;
+    }
+
+    /// The vector x with components x_c = sum_k T_j(c,k) v_k at node j.
+    Tensor<1, dim>
+    to_cartesian(const unsigned int j, const Tensor<1, dim> &v) const;
+
+    const FrictionCone<dim> &
+    friction_cone() const
+    {
+      return cone;
+    }
+
+    double
+    friction_coefficient() const
+    {
+      return cone.mu;
+    }
+
+    /// Bytes held for the candidates (frames, dofs, gaps).
+    std::size_t
+    memory_consumption() const;
+
+    /// "bottom" or "bottom, top"
+    std::string
+    describe_boundaries(const BoundaryNames &names) const;
+
+  private:
+    struct Node
+    {
+      Point<dim>              position;
+      types::global_dof_index first_dof;
+      /// Index of each displacement component in the locally owned range.
+      std::array<unsigned int, dim> local_dofs;
+      /// Whether the component is an unknown (not held by a fixed boundary).
+      std::array<bool, dim> free;
+      /// t_n,j: unit vector pointing into the obstacle.
+      Tensor<1, dim> into_obstacle;
+    };
+
+    /// (t_n^T v, t_1^T v, ...) with fixed components of v ignored.
+    Tensor<1, dim>
+    frame_transpose(const unsigned int j, Tensor<1, dim> v) const;
+
+    FrictionCone<dim>                            cone;
+    std::set<types::boundary_id>                 contact_boundaries;
+    std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
+    std::vector<Node>                            nodes;
+    /// T_t,j; empty without friction (the tangential operator is not needed).
+    std::vector<std::array<Tensor<1, dim>, dim - 1>> tangents;
+    std::vector<double>                          gap;
+    types::global_dof_index                      n_global = 0;
+    MPI_Comm                                     mpi_communicator = MPI_COMM_WORLD;
+  };
+} // namespace FrictionalContact

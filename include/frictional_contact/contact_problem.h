@@ -1,0 +1,86 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/contact_operator.h>
+
+#include <string>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * One incremental problem of the paper, eq. (9): find du and r with
+   * K du - p = T r and the cone complementarity at every candidate, for
+   * the gaps g_j held by the contact operator.
+   */
+  template <int dim>
+  struct IncrementalProblem
+  {
+    const TrilinosWrappers::SparseMatrix &stiffness;
+    /// p = p^{l+1} - K u^l (zero at fixed dofs).
+    const TrilinosWrappers::MPI::Vector &load;
+    const ContactOperator<dim>          &contact;
+    /// The paper's sigma_T and mu_pi.
+    double largest_singular_value_T = 1;
+    double smallest_eigenvalue_K    = 0;
+  };
+
+  /// The paper's three residuals, eqs. (24)-(26).
+  struct Residuals
+  {
+    /// |K du - p - T r|
+    double force_balance = 0;
+    /// |sum_j <(-g_j - mu |T_t,j^T du| + t_n,j^T du, T_t,j^T du), r_j>|
+    double complementarity = 0;
+    /// |min(g - T_n^T du, 0)|
+    double penetration = 0;
+
+    bool
+    finite() const
+    {
+      return std::isfinite(force_balance) && std::isfinite(complementarity) &&
+             std::isfinite(penetration);
+    }
+  };
+
+  /**
+   * The residuals at (du, r), given K du and T r (which the solvers have at
+   * hand). @p scratch is a work vector of the size of du.
+   */
+  template <int dim>
+  Residuals
+  compute_residuals(const IncrementalProblem<dim>     &problem,
+                    const TrilinosWrappers::MPI::Vector &du,
+                    const TrilinosWrappers::MPI::Vector &K_du,
+                    const TrilinosWrappers::MPI::Vector &T_r,
+                    const std::vector<Tensor<1, dim>>   &r,
+                    TrilinosWrappers::MPI::Vector       &scratch);
+
+  /// One row of a convergence history: one primal-dual iteration.
+  struct HistoryRow
+  {
+    unsigned int iteration;
+    double       seconds;
+    Residuals    residuals;
+    double       step;
+    unsigned int cg_iterations;
+  };
+
+  /// What a contact solve reports, whatever the method.
+  struct SolveStatistics
+  {
+    bool         converged      = false;
+    unsigned int iterations     = 0;
+    unsigned int cg_iterations  = 0;
+    unsigned int amg_setups     = 0;
+    double       seconds        = 0;
+    double       last_step      = 0;
+    Residuals    residuals;
+    /// Why the solve stopped, if it did not converge.
+    std::string  failure;
+    /// One row per iteration, if recording was asked for.
+    std::vector<HistoryRow> history;
+  };
+} // namespace FrictionalContact

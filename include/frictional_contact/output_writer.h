@@ -1,0 +1,96 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <frictional_contact/contact_operator.h>
+#include <frictional_contact/elastic_body.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /// Per-candidate results of an increment, in the order of the contact operator.
+  template <int dim>
+  struct ContactResults
+  {
+    /// Total reaction r^{l+1} and its increment, in the local frame (r_n, r_t).
+    std::vector<Tensor<1, dim>> reaction;
+    std::vector<Tensor<1, dim>> reaction_increment;
+    /// Normal and tangential displacement increment, T_j^T du.
+    std::vector<Tensor<1, dim>> local_displacement;
+    /// Gap remaining after the increment, g_j - t_n,j^T du (linearised).
+    std::vector<double>       gap;
+    std::vector<ContactState> state;
+  };
+
+  /**
+   * Writes the results of each increment: VTU/PVTU for ParaView (listed
+   * with their times in solution.pvd, rewritten after every increment) and,
+   * on request, CSV tables of the contact candidates and of all vertices
+   * (gathered on rank 0, sorted by coordinates; for small problems).
+   */
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    OutputWriter(ParameterHandler &prm, const std::string &output_directory);
+
+    /// Whether anything is written at all.
+    bool
+    writes_files() const
+    {
+      return write_vtu || write_csv;
+    }
+
+    /// "vtu every increment, csv tables"
+    std::string
+    describe() const;
+
+    /**
+     * Writes increment @p increment at time @p time. @p u is the total
+     * displacement with ghost entries.
+     */
+    void
+    write(const unsigned int          increment,
+          const double                time,
+          const ElasticBody<dim>     &body,
+          const ContactOperator<dim> &contact,
+          const Vector               &u,
+          const ContactResults<dim>  &results);
+
+  private:
+    void
+    write_vtu_files(const unsigned int          increment,
+                    const double                time,
+                    const ElasticBody<dim>     &body,
+                    const ContactOperator<dim> &contact,
+                    const Vector               &u,
+                    const ContactResults<dim>  &results);
+
+    void
+    write_csv_files(const unsigned int          increment,
+                    const ElasticBody<dim>     &body,
+                    const ContactOperator<dim> &contact,
+                    const Vector               &u,
+                    const ContactResults<dim>  &results) const;
+
+    std::string directory;
+    bool        write_vtu;
+    bool        write_csv;
+    unsigned int n_groups;
+
+    FE_Q<dim>       scalar_fe;
+    DoFHandler<dim> scalar_dof_handler;
+    /// (time, pvtu file) of every increment written so far.
+    std::vector<std::pair<double, std::string>> times_and_names;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <frictional_contact/contact_problem.h>
+#include <frictional_contact/shifted_stiffness_solver.h>
+
+namespace FrictionalContact
+{
+  /**
+   * Kanno's accelerated primal-dual method (Algorithm 2 of the paper) for
+   * one incremental problem, with the projection onto the friction cone of
+   * Algorithm 3 and the update of the modified gap
+   * g~_j = g_j + mu |T_t,j^T du|. Each primal step solves
+   * (beta_k K + I) du_{k+1} = b with CG, warm-started from du_k: it solves
+   * for the step du_{k+1} - du_k, whose right-hand side is
+   * beta_k (p + T r_{k+1} - K du_k), which is the same thing. Stops when
+   * |du_{k+1} - du_k| <= tolerance, as the paper.
+   */
+  template <int dim>
+  class PrimalDualSolver
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /// Declares the entries of "Contact solver" that this method reads.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    PrimalDualSolver(ParameterHandler &prm, const ConditionalOStream &pcout);
+
+    /**
+     * Solves @p problem. @p du and @p r hold the initial iterate on entry
+     * and the last iterate on exit (whether or not it converged).
+     */
+    SolveStatistics
+    solve(const IncrementalProblem<dim> &problem,
+          ShiftedStiffnessSolver        &linear_solver,
+          Vector                        &du,
+          std::vector<Tensor<1, dim>>   &r,
+          const bool                     record_history) const;
+
+  private:
+    double                    initial_alpha;
+    double                    tolerance;
+    unsigned int              max_iterations;
+    unsigned int              report_every;
+    const ConditionalOStream &pcout;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,111 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * Solves (K + sigma I) x = b with preconditioned conjugate gradients,
+   * warm-started from the x it is given. Kanno's primal step
+   * (beta K + I) x = b is this system with sigma = 1/beta; sigma = 0 is the
+   * plain elastic problem. Owns the preconditioner and decides, from sigma,
+   * which one to use and when to rebuild it:
+   *
+   * - Jacobi (diagonal of K + sigma I) when the identity dominates,
+   *   i.e. max diag(K) <= "Jacobi threshold" * sigma: ML's aggregation
+   *   breaks down on such near-identity matrices, and CG needs few
+   *   iterations anyway;
+   * - otherwise Trilinos ML (smoothed aggregation with the rigid-body modes
+   *   as near null space) built on K + sigma_ref I, reused while sigma stays
+   *   within a factor "AMG rebuild factor" of sigma_ref (or both are below
+   *   the stiffness scale, where the shift does not matter).
+   */
+  class ShiftedStiffnessSolver
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads the subsection "Linear solver".
+    explicit ShiftedStiffnessSolver(ParameterHandler &prm);
+
+    /**
+     * Keeps a reference to @p stiffness (which must outlive this object)
+     * and the near null space for the AMG (one vector per rigid-body mode,
+     * each of the locally owned size).
+     */
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &stiffness,
+               std::vector<std::vector<double>>      rigid_body_modes,
+               const double                          smallest_eigenvalue_estimate = 0);
+
+    /**
+     * Solves (K + sigma I) x = b until |b - (K + sigma I) x| <= tolerance,
+     * starting from @p x. Returns the number of CG iterations. Throws a
+     * SolverError if CG does not converge.
+     */
+    unsigned int
+    solve(const double sigma,
+          Vector      &x,
+          const Vector &b,
+          const double tolerance);
+
+    /// The relative tolerance users set for the primal step.
+    double
+    relative_tolerance() const
+    {
+      return rel_tolerance;
+    }
+
+    /// How many times the AMG was set up, and the seconds it took.
+    unsigned int n_amg_setups = 0;
+    double       amg_setup_seconds = 0;
+
+    /// The preconditioner of the last solve: "AMG" or "Jacobi".
+    std::string last_preconditioner;
+
+  private:
+    bool
+    use_jacobi(const double sigma) const;
+
+    void
+    build_amg(const double sigma);
+
+    void
+    build_jacobi(const double sigma);
+
+    // Parameters.
+    double       rel_tolerance;
+    unsigned int max_iterations;
+    std::string  preconditioner_choice;
+    double       jacobi_threshold;
+    double       rebuild_factor;
+    unsigned int smoother_sweeps;
+    double       aggregation_threshold;
+
+    const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
+    std::vector<std::vector<double>>      modes;
+    double                                max_diagonal = 0;
+    /// A lower bound for K's spectrum (0 if unknown), to judge shifts.
+    double                                stiffness_floor = 0;
+
+    TrilinosWrappers::PreconditionAMG amg;
+    TrilinosWrappers::SparseMatrix    shifted_matrix;
+    double                            amg_sigma = -1;
+
+    Vector diagonal;
+    Vector inverse_diagonal;
+    double jacobi_sigma = -1;
+  };
+} // namespace FrictionalContact

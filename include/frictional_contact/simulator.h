@@ -1,0 +1,85 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+
+#include <frictional_contact/boundary_conditions.h>
+#include <frictional_contact/contact_operator.h>
+#include <frictional_contact/elastic_body.h>
+#include <frictional_contact/geometry/interface.h>
+#include <frictional_contact/material.h>
+#include <frictional_contact/output_writer.h>
+#include <frictional_contact/primal_dual_solver.h>
+#include <frictional_contact/shifted_stiffness_solver.h>
+#include <frictional_contact/statistics.h>
+
+#include <memory>
+
+namespace FrictionalContact
+{
+  /**
+   * One run of a scene: owns the mesh and wires the elastic body, the
+   * contact operator, the solvers and the output together, in the order a
+   * parameter file describes them. All parameters are read (and checked) in
+   * the constructor, before anything is computed or written.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    Simulator(ParameterHandler &prm, const MPI_Comm comm);
+
+    /// Sets up, solves and writes the results. Throws SolverError on failure.
+    void
+    run();
+
+  private:
+    void
+    setup();
+
+    /// The plain elastic problem K u = p (no contact boundary).
+    void
+    solve_elastic();
+
+    void
+    solve_contact();
+
+    /// Prints the force balance and writes output and statistics.
+    void
+    finish_increment(const TrilinosWrappers::MPI::Vector &u,
+                     const ContactResults<dim>           &results,
+                     const SolveStatistics               &statistics);
+
+    /// Results per candidate for the increment du with reactions r.
+    ContactResults<dim>
+    contact_results(const TrilinosWrappers::MPI::Vector &du,
+                    const std::vector<Tensor<1, dim>>   &r) const;
+
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
+    std::string        output_directory;
+    std::string        parameters_as_run;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<Geometry::Interface<dim>> geometry;
+    BoundaryNames                             boundary_names;
+    LinearElasticMaterial<dim>                material;
+    BoundaryConditions<dim>                   boundary_conditions;
+    ElasticBody<dim>                          body;
+    ContactOperator<dim>                      contact;
+    ShiftedStiffnessSolver                    linear_solver;
+    PrimalDualSolver<dim>                     contact_solver;
+    OutputWriter<dim>                         output;
+    StatisticsFile                            statistics;
+    TimerOutput                               timer;
+
+    double       eigenvalue_tolerance;
+    unsigned int lanczos_vectors;
+    bool         write_history;
+  };
+} // namespace FrictionalContact

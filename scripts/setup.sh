@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project needs (only those missing),
+# then configures and builds it in ./build (Release). Safe to run again:
+# it only does what is left to do. Both README commands start with it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(libdeal.ii-dev cmake g++ make numdiff python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+    || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "-- installing: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y "${missing[@]}"
+fi
+
+build_type="${BUILD_TYPE:-Release}"
+jobs="$(nproc)"
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type"
+fi
+cmake --build build -j "$jobs"

@@ -1,0 +1,284 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <frictional_contact/contact_operator.h>
+#include <frictional_contact/plugins.h>
+
+#include <map>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// dim-1 orthonormal tangents to the unit vector @p n.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangents_to(const Tensor<1, dim> &n)
+    {
+      std::array<Tensor<1, dim>, dim - 1> t;
+      if constexpr (dim == 2)
+        {
+          t[0][0] = n[1];
+          t[0][1] = -n[0];
+        }
+      else
+        {
+          // Start from the coordinate axis least aligned with n, so that a
+          // normal along z gives the tangents x and y.
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(n[d]) < std::abs(n[axis]))
+              axis = d;
+          Tensor<1, dim> e;
+          e[axis] = 1;
+          t[0]    = e - (e * n) * n;
+          t[0] /= t[0].norm();
+          t[1] = cross_product_3d(n, t[0]);
+        }
+      return t;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Contact boundaries",
+                      "",
+                      Patterns::Anything(),
+                      "Boundaries (names or ids, separated by ';') whose "
+                      "vertices may touch the obstacle. Empty: no contact, "
+                      "a plain linear elastic solve.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Double(0.),
+                      "Coulomb friction coefficient mu (>= 0). 0 is "
+                      "frictionless contact.");
+    prm.enter_subsection("Obstacle");
+    PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
+      prm, "plane", "The rigid obstacle's shape.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ContactOperator<dim>::ContactOperator(ParameterHandler    &prm,
+                                        const BoundaryNames &names)
+    : cone([&]() {
+      prm.enter_subsection("Contact");
+      const double mu = prm.get_double("Friction coefficient");
+      prm.leave_subsection();
+      return mu;
+    }())
+  {
+    prm.enter_subsection("Contact");
+    for (const std::string &item :
+         Input::split(prm.get("Contact boundaries"), ';'))
+      contact_boundaries.insert(
+        names.id("Contact/Contact boundaries", item));
+    prm.enter_subsection("Obstacle");
+    obstacle = PluginRegistry<Obstacle::Interface<dim>>::create(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::setup(const ElasticBody<dim> &body,
+                              const BoundaryNames    &names)
+  {
+    nodes.clear();
+    tangents.clear();
+    gap.clear();
+
+    const IndexSet &owned = body.locally_owned_dofs();
+    // Keyed by the first dof of the vertex: each vertex once, in dof order.
+    std::map<types::global_dof_index, Node> found;
+    std::set<types::boundary_id>            boundaries_with_candidates;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              contact_boundaries.count(face->boundary_id()) > 0)
+            for (const unsigned int v : face->vertex_indices())
+              {
+                Node node;
+                bool all_fixed = true;
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const auto g = face->vertex_dof_index(v, c);
+                    node.free[c] = !body.get_constraints().is_constrained(g);
+                    all_fixed    = all_fixed && !node.free[c];
+                    if (owned.is_element(g))
+                      node.local_dofs[c] = owned.index_within_set(g);
+                  }
+                const auto first_dof = face->vertex_dof_index(v, 0);
+                if (all_fixed || !owned.is_element(first_dof))
+                  continue;
+                boundaries_with_candidates.insert(face->boundary_id());
+                node.position      = face->vertex(v);
+                node.first_dof     = first_dof;
+                node.into_obstacle = -obstacle->outward_normal(node.position);
+                found.emplace(first_dof, node);
+              }
+
+    const std::set<types::boundary_id> with_candidates =
+      Utilities::MPI::compute_set_union(boundaries_with_candidates,
+                                        body.get_mpi_communicator());
+    for (const types::boundary_id id : contact_boundaries)
+      if (with_candidates.count(id) == 0)
+        throw InputError("<Contact/Contact boundaries> = '" + names.name(id) +
+                         "': this boundary has no contact candidate node "
+                         "(all its nodes are held by <Boundary conditions/"
+                         "Fixed boundaries>); remove it from the list or free "
+                         "its nodes");
+
+    nodes.reserve(found.size());
+    gap.reserve(found.size());
+    for (const auto &[dof, node] : found)
+      {
+        nodes.push_back(node);
+        gap.push_back(obstacle->signed_distance(node.position));
+        if (cone.mu > 0)
+          tangents.push_back(tangents_to<dim>(-node.into_obstacle));
+      }
+    n_global = Utilities::MPI::sum<types::global_dof_index>(
+      nodes.size(), body.get_mpi_communicator());
+    mpi_communicator = body.get_mpi_communicator();
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::frame_transpose(const unsigned int j,
+                                        Tensor<1, dim>     v) const
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        v[c] = 0;
+    Tensor<1, dim> local;
+    local[0] = nodes[j].into_obstacle * v;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        local[k + 1] = tangents[j][k] * v;
+    return local;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_cartesian(const unsigned int    j,
+                                     const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> x = v[0] * nodes[j].into_obstacle;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        x += v[k + 1] * tangents[j][k];
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        x[c] = 0;
+    return x;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::apply(const std::vector<Tensor<1, dim>> &r,
+                              Vector                            &f) const
+  {
+    f = 0;
+    double *values = f.begin();
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const Tensor<1, dim> force = to_cartesian(j, r[j]);
+        for (unsigned int c = 0; c < dim; ++c)
+          values[nodes[j].local_dofs[c]] += force[c];
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::largest_singular_value() const
+  {
+    // Candidates sit on distinct nodes, so T^T T is block diagonal with the
+    // blocks T_j^T T_j, and sigma_T^2 is the largest of their eigenvalues.
+    double largest = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        SymmetricTensor<2, dim> gram;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            Tensor<1, dim> e;
+            e[a]                           = 1;
+            const Tensor<1, dim> column_a  = to_cartesian(j, e);
+            for (unsigned int b = 0; b <= a; ++b)
+              {
+                Tensor<1, dim> f;
+                f[b]       = 1;
+                gram[a][b] = column_a * to_cartesian(j, f);
+              }
+          }
+        largest = std::max(largest, eigenvalues(gram)[0]);
+      }
+    return std::sqrt(Utilities::MPI::max(largest, mpi_communicator));
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::orthonormality_defect() const
+  {
+    const unsigned int n_columns = cone.mu > 0 ? dim : 1;
+    double             defect    = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      for (unsigned int a = 0; a < n_columns; ++a)
+        for (unsigned int b = 0; b < n_columns; ++b)
+          {
+            Tensor<1, dim> e, f;
+            e[a] = 1;
+            f[b] = 1;
+            defect = std::max(defect,
+                              std::abs(to_cartesian(j, e) * to_cartesian(j, f) -
+                                       (a == b ? 1. : 0.)));
+          }
+    return Utilities::MPI::max(defect, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  ContactOperator<dim>::memory_consumption() const
+  {
+    return nodes.capacity() * sizeof(Node) +
+           tangents.capacity() * sizeof(tangents[0]) +
+           gap.capacity() * sizeof(double);
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactOperator<dim>::describe_boundaries(const BoundaryNames &names) const
+  {
+    std::string text;
+    for (const types::boundary_id id : contact_boundaries)
+      text += (text.empty() ? "" : ", ") + names.name(id);
+    return text;
+  }
+
+  template class ContactOperator<2>;
+  template class ContactOperator<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,174 @@
+#include <frictional_contact/input.h>
+
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace Input
+  {
+    std::string
+    trim(const std::string &text)
+    {
+      const auto begin = text.find_first_not_of(" \t\r\n");
+      if (begin == std::string::npos)
+        return "";
+      const auto end = text.find_last_not_of(" \t\r\n");
+      return text.substr(begin, end - begin + 1);
+    }
+
+
+
+    std::string
+    to_text(const double value)
+    {
+      std::ostringstream stream;
+      stream << value;
+      return stream.str();
+    }
+
+
+
+    std::vector<std::string>
+    split(const std::string &text, const char separator)
+    {
+      std::vector<std::string> pieces;
+      std::string              piece;
+      std::istringstream       stream(text);
+      while (std::getline(stream, piece, separator))
+        if (const std::string trimmed = trim(piece); !trimmed.empty())
+          pieces.push_back(trimmed);
+      return pieces;
+    }
+
+
+
+    void
+    fail(const std::string &entry,
+         const std::string &value,
+         const std::string &allowed)
+    {
+      throw InputError("<" + entry + "> = '" + value + "' is not valid: " +
+                       allowed);
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    parse_vector(const std::string &entry, const std::string &text)
+    {
+      const std::vector<std::string> pieces = split(text, ',');
+      const std::string allowed = std::to_string(dim) +
+                                  " numbers separated by commas are expected "
+                                  "(one per coordinate direction)";
+      if (pieces.size() != dim)
+        fail(entry, text, allowed);
+      Tensor<1, dim> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          std::size_t end = 0;
+          try
+            {
+              result[d] = std::stod(pieces[d], &end);
+            }
+          catch (const std::exception &)
+            {
+              fail(entry, text, allowed);
+            }
+          if (end != pieces[d].size() || !std::isfinite(result[d]))
+            fail(entry, text, allowed);
+        }
+      return result;
+    }
+
+
+
+    void
+    enter_path(ParameterHandler &prm, const std::string &path)
+    {
+      for (const std::string &section : split(path, '/'))
+        prm.enter_subsection(section);
+    }
+
+
+
+    void
+    leave_path(ParameterHandler &prm, const std::string &path)
+    {
+      for (std::size_t i = 0; i < split(path, '/').size(); ++i)
+        prm.leave_subsection();
+    }
+
+    template Tensor<1, 2>
+    parse_vector<2>(const std::string &, const std::string &);
+    template Tensor<1, 3>
+    parse_vector<3>(const std::string &, const std::string &);
+  } // namespace Input
+
+
+
+  BoundaryNames::BoundaryNames(
+    std::map<std::string, types::boundary_id> names,
+    std::set<types::boundary_id>              ids_in_mesh)
+    : names(std::move(names))
+    , ids_in_mesh(std::move(ids_in_mesh))
+  {}
+
+
+
+  types::boundary_id
+  BoundaryNames::id(const std::string &entry,
+                    const std::string &name_or_number) const
+  {
+    types::boundary_id id = numbers::invalid_boundary_id;
+    if (const auto it = names.find(name_or_number); it != names.end())
+      id = it->second;
+    else
+      {
+        std::size_t end = 0;
+        try
+          {
+            const long value = std::stol(name_or_number, &end);
+            if (end == name_or_number.size() && value >= 0 &&
+                value < numbers::internal_face_boundary_id)
+              id = static_cast<types::boundary_id>(value);
+          }
+        catch (const std::exception &)
+          {}
+      }
+    if (id == numbers::invalid_boundary_id || ids_in_mesh.count(id) == 0)
+      Input::fail(entry,
+                  name_or_number,
+                  "the mesh has the boundaries " + describe());
+    return id;
+  }
+
+
+
+  std::string
+  BoundaryNames::name(const types::boundary_id id) const
+  {
+    for (const auto &[name, named_id] : names)
+      if (named_id == id)
+        return name;
+    return std::to_string(id);
+  }
+
+
+
+  std::string
+  BoundaryNames::describe() const
+  {
+    std::string text;
+    for (const types::boundary_id id : ids_in_mesh)
+      {
+        if (!text.empty())
+          text += ", ";
+        const std::string symbolic = name(id);
+        text += symbolic == std::to_string(id) ?
+                  symbolic :
+                  symbolic + " (" + std::to_string(id) + ")";
+      }
+    return text;
+  }
+} // namespace FrictionalContact

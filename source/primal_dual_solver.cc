@@ -1,0 +1,163 @@
+#include <deal.II/base/timer.h>
+
+#include <frictional_contact/primal_dual_solver.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  PrimalDualSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry("Initial alpha",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "The dual step length alpha_0 of Algorithm 2 (> 0); "
+                      "beta_0 = 1 / (alpha_0 sigma_T^2). The paper uses 0.1.");
+    prm.declare_entry("Tolerance",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "Stop when |du_{k+1} - du_k| <= this (length), as the "
+                      "paper (1e-12).");
+    prm.declare_entry("Maximum iterations",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Primal-dual iterations allowed per increment. A solve "
+                      "that needs more fails with its residuals.");
+    prm.declare_entry("Report every",
+                      "0",
+                      Patterns::Integer(0),
+                      "Print the residuals every this many iterations "
+                      "(0: only at the end).");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  PrimalDualSolver<dim>::PrimalDualSolver(ParameterHandler         &prm,
+                                          const ConditionalOStream &pcout)
+    : pcout(pcout)
+  {
+    prm.enter_subsection("Contact solver");
+    initial_alpha  = prm.get_double("Initial alpha");
+    tolerance      = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
+    report_every   = prm.get_integer("Report every");
+    prm.leave_subsection();
+    if (!(initial_alpha > 0))
+      Input::fail("Contact solver/Initial alpha",
+                  Input::to_text(initial_alpha),
+                  "a positive number is expected");
+  }
+
+
+
+  template <int dim>
+  SolveStatistics
+  PrimalDualSolver<dim>::solve(const IncrementalProblem<dim> &problem,
+                               ShiftedStiffnessSolver        &linear_solver,
+                               Vector                        &du,
+                               std::vector<Tensor<1, dim>>   &r,
+                               const bool record_history) const
+  {
+    const Timer                 timer;
+    const ContactOperator<dim> &contact = problem.contact;
+    const FrictionCone<dim>    &cone    = contact.friction_cone();
+    const double                mu      = cone.mu;
+    const unsigned int          c_local = contact.n_local();
+    const std::vector<double>  &g       = contact.gaps();
+    const unsigned int amg_setups_before = linear_solver.n_amg_setups;
+
+    Vector du_hat(du), step(du), K_du(du), T_r(du), rhs(du), scratch(du);
+    problem.stiffness.vmult(K_du, du);
+
+    double alpha = initial_alpha;
+    double beta  = 1. / (initial_alpha * std::pow(problem.largest_singular_value_T, 2));
+
+    SolveStatistics result;
+    for (unsigned int k = 0; k < max_iterations; ++k)
+      {
+        // Dual step (lines 4-7): modified gap, then projection onto F.
+        for (unsigned int j = 0; j < c_local; ++j)
+          {
+            const Tensor<1, dim> u_j     = contact.local_part(j, du);
+            const Tensor<1, dim> u_hat_j = contact.local_part(j, du_hat);
+            const double         g_tilde =
+              g[j] + mu * FrictionCone<dim>::tangential_norm(u_j);
+            Tensor<1, dim> s = r[j] - alpha * u_hat_j;
+            s[0]             = r[j][0] + alpha * (g_tilde - u_hat_j[0]);
+            r[j]             = cone.project(s);
+          }
+        contact.apply(r, T_r);
+
+        // Primal step (lines 8-9) for the increment du_{k+1} - du_k:
+        // (beta K + I) step = beta (p + T r - K du), i.e.
+        // (K + I / beta) step = p + T r - K du.
+        rhs = problem.load;
+        rhs += T_r;
+        rhs -= K_du;
+        step = 0;
+        const unsigned int cg_iterations = linear_solver.solve(
+          1. / beta, step, rhs, linear_solver.relative_tolerance() * rhs.l2_norm());
+        result.cg_iterations += cg_iterations;
+
+        // Acceleration (lines 10-12).
+        const double theta = 1. / std::sqrt(1. + problem.smallest_eigenvalue_K * beta);
+        alpha /= theta;
+        beta *= theta;
+        du += step;
+        du_hat = du;
+        du_hat.add(theta, step);
+
+        problem.stiffness.vmult(K_du, du);
+        result.iterations = k + 1;
+        result.last_step  = step.l2_norm();
+        result.residuals =
+          compute_residuals(problem, du, K_du, T_r, r, scratch);
+
+        if (record_history)
+          result.history.push_back({k + 1,
+                                    timer.wall_time(),
+                                    result.residuals,
+                                    result.last_step,
+                                    cg_iterations});
+        if (report_every > 0 && (k + 1) % report_every == 0)
+          pcout << "    iteration " << std::setw(6) << k + 1
+                << ": |du_k+1 - du_k| = " << std::setprecision(3)
+                << std::scientific << result.last_step << ", residuals "
+                << result.residuals.force_balance << ' '
+                << result.residuals.complementarity << ' '
+                << result.residuals.penetration << ", " << cg_iterations
+                << " CG iterations" << std::defaultfloat << std::endl;
+
+        if (!std::isfinite(result.last_step) || !result.residuals.finite())
+          {
+            result.failure = "NaN or infinity at iteration " +
+                             std::to_string(k + 1) +
+                             " (the iteration diverged)";
+            break;
+          }
+        if (result.last_step <= tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+      }
+    if (!result.converged && result.failure.empty())
+      result.failure = "no convergence in " + std::to_string(max_iterations) +
+                       " iterations (last |du_k+1 - du_k| = " +
+                       Input::to_text(result.last_step) + ", tolerance " +
+                       Input::to_text(tolerance) +
+                       "); raise <Contact solver/Maximum iterations>";
+    result.amg_setups = linear_solver.n_amg_setups - amg_setups_before;
+    result.seconds    = timer.wall_time();
+    return result;
+  }
+
+  template class PrimalDualSolver<2>;
+  template class PrimalDualSolver<3>;
+} // namespace FrictionalContact

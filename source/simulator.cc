@@ -1,0 +1,429 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <frictional_contact/files.h>
+#include <frictional_contact/plugins.h>
+#include <frictional_contact/simulator.h>
+#include <frictional_contact/stiffness_spectrum.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// "(0, -0.01)"
+    template <int dim>
+    std::string
+    to_text(const Tensor<1, dim> &v)
+    {
+      std::string text = "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        text += (d == 0 ? "" : ", ") + Input::to_text(v[d]);
+      return text + ")";
+    }
+
+    std::string
+    scientific(const double value, const unsigned int digits = 3)
+    {
+      std::ostringstream out;
+      out << std::scientific << std::setprecision(digits) << value;
+      return out.str();
+    }
+
+    std::string
+    percent(const unsigned int part, const types::global_dof_index whole)
+    {
+      std::ostringstream out;
+      out << std::fixed << std::setprecision(1)
+          << (whole > 0 ? 100. * part / whole : 0.) << '%';
+      return out.str();
+    }
+
+    /// Boundary ids present in the distributed mesh (on any rank).
+    template <int dim>
+    std::set<types::boundary_id>
+    boundary_ids_in(const parallel::distributed::Triangulation<dim> &mesh)
+    {
+      std::set<types::boundary_id> ids;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              ids.insert(face->boundary_id());
+      return Utilities::MPI::compute_set_union(ids, mesh.get_communicator());
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the scene: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Where results are written (created if needed).");
+
+    prm.enter_subsection("Geometry");
+    PluginRegistry<Geometry::Interface<dim>>::declare_parameters(
+      prm, "box", "The shape of the elastic body and its boundary names.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "How often every cell of the geometry's mesh is split "
+                      "in 2^dim (0 to 12).");
+    prm.leave_subsection();
+
+    LinearElasticMaterial<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm);
+    ContactOperator<dim>::declare_parameters(prm);
+
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry("Eigenvalue tolerance",
+                      "1e-8",
+                      Patterns::Double(0., 1.),
+                      "Relative accuracy of mu_pi, the smallest eigenvalue "
+                      "of K, which sets the acceleration of Algorithm 2.");
+    prm.declare_entry("Lanczos vectors",
+                      "20",
+                      Patterns::Integer(4),
+                      "Lanczos vectors PARPACK keeps while computing mu_pi "
+                      "(>= 4).");
+    prm.leave_subsection();
+    PrimalDualSolver<dim>::declare_parameters(prm);
+    ShiftedStiffnessSolver::declare_parameters(prm);
+
+    OutputWriter<dim>::declare_parameters(prm);
+    StatisticsFile::declare_parameters(prm);
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write convergence history",
+                      "false",
+                      Patterns::Bool(),
+                      "Write history-NNNNN.txt for each increment: one row "
+                      "per primal-dual iteration with the wall time, the "
+                      "three residuals, |du_k+1 - du_k| and the CG "
+                      "iterations (see scripts/plot_history.py).");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm comm)
+    : mpi_communicator(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , output_directory(prm.get("Output directory"))
+    , triangulation(comm)
+    , geometry([&]() {
+      prm.enter_subsection("Geometry");
+      auto model = PluginRegistry<Geometry::Interface<dim>>::create(prm);
+      prm.leave_subsection();
+      return model;
+    }())
+    , boundary_names([&]() {
+      geometry->create_coarse_mesh(triangulation);
+      return BoundaryNames(geometry->boundary_names(),
+                           boundary_ids_in(triangulation));
+    }())
+    , material(prm)
+    , boundary_conditions(prm, boundary_names)
+    , body(triangulation, material, boundary_conditions)
+    , contact(prm, boundary_names)
+    , linear_solver(prm)
+    , contact_solver(prm, pcout)
+    , output(prm, output_directory)
+    , statistics(prm, output_directory, comm)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+  {
+    prm.enter_subsection("Geometry");
+    const unsigned int refinements = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+    triangulation.refine_global(geometry->n_built_in_refinements() + refinements);
+
+    prm.enter_subsection("Contact solver");
+    eigenvalue_tolerance = prm.get_double("Eigenvalue tolerance");
+    lanczos_vectors      = prm.get_integer("Lanczos vectors");
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    write_history = prm.get_bool("Write convergence history");
+    prm.leave_subsection();
+
+    std::ostringstream parameters;
+    prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+    parameters_as_run = parameters.str();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup()
+  {
+    {
+      TimerOutput::Scope scope(timer, "Setup");
+      body.setup();
+      if (contact.active())
+        contact.setup(body, boundary_names);
+    }
+    {
+      TimerOutput::Scope scope(timer, "Assembly");
+      body.assemble();
+    }
+    body.check_rigid_body_motion_is_prevented();
+
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    pcout << "-- contact " << FRICTIONAL_CONTACT_VERSION << " on deal.II "
+          << DEAL_II_PACKAGE_VERSION << ", " << n_ranks << " MPI rank"
+          << (n_ranks > 1 ? "s" : "") << std::endl;
+    pcout << "Scene: " << dim << "D, " << material.describe() << std::endl;
+    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells; d = "
+          << body.n_free_dofs() << " free displacement dofs of "
+          << body.get_dof_handler().n_dofs() << std::endl;
+    if (contact.active())
+      {
+        const double      mu = contact.friction_coefficient();
+        const std::size_t bytes =
+          Utilities::MPI::sum(contact.memory_consumption(), mpi_communicator);
+        pcout << "Contact: "
+              << (mu > 0 ? "frictional (mu = " + Input::to_text(mu) + ")" :
+                           std::string("frictionless (no tangential operator)"))
+              << ", c = " << contact.n_candidates() << " candidates on "
+              << contact.describe_boundaries(boundary_names) << "; "
+              << bytes << " bytes of contact data" << std::endl;
+      }
+    else
+      pcout << "Contact: none (one linear elastic solve)" << std::endl;
+    pcout << "Output: " << output.describe()
+          << (statistics.enabled() ? ", statistics" : "")
+          << (output.writes_files() || statistics.enabled() ?
+                " in " + output_directory + "/" :
+                std::string())
+          << std::endl;
+
+    if (output.writes_files() || statistics.enabled())
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        write_file_atomically(output_directory + "/parameters.prm",
+                              parameters_as_run);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    setup();
+    linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
+    if (contact.active())
+      solve_contact();
+    else
+      solve_elastic();
+    timer.print_wall_time_statistics(mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_elastic()
+  {
+    TrilinosWrappers::MPI::Vector u = body.make_vector();
+    SolveStatistics               result;
+    {
+      TimerOutput::Scope scope(timer, "Elastic solve");
+      const Timer        wall;
+      const double       tolerance =
+        linear_solver.relative_tolerance() * body.load_vector().l2_norm();
+      result.cg_iterations =
+        linear_solver.solve(0., u, body.load_vector(), tolerance);
+      result.iterations = 1;
+      result.amg_setups = linear_solver.n_amg_setups;
+      result.converged  = true;
+      result.seconds    = wall.wall_time();
+    }
+    body.get_constraints().distribute(u);
+    pcout << "Elastic solve: " << result.cg_iterations << " CG iterations ("
+          << linear_solver.last_preconditioner << ")" << std::endl;
+    finish_increment(u, ContactResults<dim>(), result);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_contact()
+  {
+    IncrementalProblem<dim> problem{body.stiffness_matrix(),
+                                    body.load_vector(),
+                                    contact};
+    problem.largest_singular_value_T = contact.largest_singular_value();
+    {
+      TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
+      const SmallestEigenvalue mu_pi =
+        compute_smallest_eigenvalue(body.stiffness_matrix(),
+                                    linear_solver,
+                                    eigenvalue_tolerance,
+                                    lanczos_vectors);
+      problem.smallest_eigenvalue_K = mu_pi.value;
+      pcout << "Solver: accelerated primal-dual (Kanno, Algorithm 2)"
+            << std::endl
+            << "    sigma_T = " << Input::to_text(problem.largest_singular_value_T)
+            << " (largest singular value of T)" << std::endl
+            << "    mu_pi = " << scientific(mu_pi.value, 6)
+            << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
+            << scientific(mu_pi.rayleigh_quotient, 6) << ")" << std::endl
+            << "-- mu_pi took " << mu_pi.n_solves << " solves with K, "
+            << mu_pi.cg_iterations << " CG iterations" << std::endl;
+    }
+
+    TrilinosWrappers::MPI::Vector du = body.make_vector();
+    std::vector<Tensor<1, dim>>   r(contact.n_local());
+    SolveStatistics               result;
+    {
+      TimerOutput::Scope scope(timer, "Contact solve");
+      result = contact_solver.solve(problem, linear_solver, du, r, write_history);
+    }
+
+    const Residuals &res = result.residuals;
+    pcout << "Increment 1: "
+          << (result.converged ? "converged" : "did NOT converge") << " after "
+          << result.iterations << " primal-dual iterations, "
+          << result.cg_iterations << " CG iterations, " << result.amg_setups
+          << " AMG set-ups" << std::endl
+          << "    residuals: force balance " << scientific(res.force_balance)
+          << ", complementarity " << scientific(res.complementarity)
+          << ", penetration " << scientific(res.penetration) << std::endl
+          << "-- contact solve wall time " << result.seconds << " s"
+          << std::endl;
+    if (!result.converged)
+      throw SolverError("increment 1: " + result.failure +
+                        ". Residuals: force balance " +
+                        scientific(res.force_balance) + ", complementarity " +
+                        scientific(res.complementarity) + ", penetration " +
+                        scientific(res.penetration) +
+                        ". Nothing was written for this increment");
+
+    body.get_constraints().distribute(du);
+    finish_increment(du, contact_results(du, r), result);
+  }
+
+
+
+  template <int dim>
+  ContactResults<dim>
+  Simulator<dim>::contact_results(const TrilinosWrappers::MPI::Vector &du,
+                                  const std::vector<Tensor<1, dim>>   &r) const
+  {
+    ContactResults<dim> results;
+    results.reaction           = r;
+    results.reaction_increment = r;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        results.local_displacement.push_back(contact.local_part(j, du));
+        results.gap.push_back(contact.gaps()[j] -
+                              results.local_displacement.back()[0]);
+        results.state.push_back(contact.friction_cone().state(r[j]));
+      }
+    return results;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_increment(const TrilinosWrappers::MPI::Vector &u,
+                                   const ContactResults<dim>           &results,
+                                   const SolveStatistics               &result)
+  {
+    // Counts of free / stick / slip and the total contact force.
+    unsigned int   counts[3] = {0, 0, 0};
+    Tensor<1, dim> contact_force;
+    double         normal_force = 0;
+    Tensor<1, dim> tangential_force;
+    for (unsigned int j = 0; j < results.state.size(); ++j)
+      {
+        ++counts[static_cast<int>(results.state[j])];
+        const Tensor<1, dim> force = contact.to_cartesian(j, results.reaction[j]);
+        contact_force += force;
+        normal_force -= results.reaction[j][0];
+        Tensor<1, dim> normal_part;
+        normal_part[0] = results.reaction[j][0];
+        tangential_force += force - contact.to_cartesian(j, normal_part);
+      }
+    Utilities::MPI::sum(counts, mpi_communicator, counts);
+    contact_force    = Utilities::MPI::sum(contact_force, mpi_communicator);
+    normal_force     = Utilities::MPI::sum(normal_force, mpi_communicator);
+    tangential_force = Utilities::MPI::sum(tangential_force, mpi_communicator);
+
+    TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
+    u_ghosted                               = u;
+    const Tensor<1, dim> support = body.support_reaction(u_ghosted, 1.);
+    const Tensor<1, dim> load    = body.total_load();
+
+    const types::global_dof_index c = contact.active() ? contact.n_candidates() : 0;
+    if (contact.active())
+      pcout << "    candidates: " << percent(counts[0], c) << " free, "
+            << percent(counts[2], c) << " slip, " << percent(counts[1], c)
+            << " stick (" << counts[0] << " / " << counts[2] << " / "
+            << counts[1] << " of " << c << ")" << std::endl;
+    pcout << "    force balance: load " << to_text(load) << " + contact "
+          << to_text(contact_force) << " + supports " << to_text(support)
+          << " = " << scientific((load + contact_force + support).norm())
+          << std::endl;
+    pcout << "    max |u| = " << Input::to_text(u.linfty_norm()) << std::endl;
+
+    {
+      TimerOutput::Scope scope(timer, "Output");
+      output.write(1, 1., body, contact, u, results);
+      statistics.add("Increment", 1);
+      statistics.add("Time", 1.);
+      statistics.add("Free dofs d", static_cast<unsigned long>(body.n_free_dofs()));
+      statistics.add("Contact candidates c", static_cast<unsigned long>(c));
+      statistics.add("Primal-dual iterations", result.iterations);
+      statistics.add("CG iterations", result.cg_iterations);
+      statistics.add("AMG setups", result.amg_setups);
+      statistics.add("Solve wall time (s)", result.seconds);
+      statistics.add_scientific("Force balance residual",
+                                result.residuals.force_balance);
+      statistics.add_scientific("Complementarity residual",
+                                result.residuals.complementarity);
+      statistics.add_scientific("Penetration residual",
+                                result.residuals.penetration);
+      statistics.add("Free nodes", counts[0]);
+      statistics.add("Stick nodes", counts[1]);
+      statistics.add("Slip nodes", counts[2]);
+      statistics.add_scientific("Normal contact force", normal_force);
+      statistics.add_scientific("Tangential contact force",
+                                tangential_force.norm());
+      statistics.add_scientific("Max displacement", u.linfty_norm());
+      statistics.write();
+
+      if (write_history && !result.history.empty() &&
+          Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        {
+          std::ostringstream text;
+          text << "# iteration seconds force_balance complementarity "
+                  "penetration step cg_iterations\n"
+               << std::setprecision(9);
+          for (const HistoryRow &row : result.history)
+            text << row.iteration << ' ' << row.seconds << ' '
+                 << row.residuals.force_balance << ' '
+                 << row.residuals.complementarity << ' '
+                 << row.residuals.penetration << ' ' << row.step << ' '
+                 << row.cg_iterations << '\n';
+          write_file_atomically(output_directory + "/history-00001.txt",
+                                text.str());
+        }
+    }
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace FrictionalContact
