@@ -38,10 +38,23 @@ namespace FrictionalContact
     void
     run();
 
-  private:
+    /// Builds the mesh, dofs, constraints, contact candidates, K and p.
     void
     setup();
 
+    const ElasticBody<dim> &
+    get_body() const
+    {
+      return body;
+    }
+
+    const ContactOperator<dim> &
+    get_contact() const
+    {
+      return contact;
+    }
+
+  private:
     /// The plain elastic problem K u = p (no contact boundary).
     void
     solve_elastic();

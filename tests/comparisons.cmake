@@ -1,0 +1,49 @@
+# Solutions compared with ../shared/reference (copied to tests/reference:
+# an independent implementation, confirmed by a semismooth Newton solver)
+# and between 1 and 2 MPI ranks. The runs are the .prm tests of the same
+# name, which write CSV tables; these tests read them.
+
+set(_reference ${CMAKE_CURRENT_SOURCE_DIR}/reference)
+
+function(contact_compare_tables _name _setup_tests _a _b)
+  add_test(NAME ${_name}
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+            ${_a} ${_b} ${ARGN})
+  set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED "${_setup_tests}")
+endfunction()
+
+foreach(_scene example1_ny10 example2_ny4)
+  set_tests_properties(${_scene} PROPERTIES FIXTURES_SETUP ${_scene})
+  set_tests_properties(${_scene}.mpirun=2 PROPERTIES FIXTURES_SETUP ${_scene}.mpirun=2)
+endforeach()
+
+set(_out1 ${CMAKE_CURRENT_BINARY_DIR}/example1_ny10/output-example1_ny10)
+set(_out1p ${CMAKE_CURRENT_BINARY_DIR}/example1_ny10.mpirun=2/output-example1_ny10)
+contact_compare_tables(example1_ny10.reference_contact example1_ny10
+  ${_reference}/example1_NY10_contact.csv ${_out1}/contact-00001.csv
+  --keys x --columns ux,uy,un,gap,rn,rt1 --rename un_down=un --states state)
+contact_compare_tables(example1_ny10.reference_displacement example1_ny10
+  ${_reference}/example1_NY10_displacement.csv ${_out1}/displacement-00001.csv
+  --keys x,y --columns ux,uy)
+contact_compare_tables(example1_ny10.one_vs_two_ranks
+  "example1_ny10;example1_ny10.mpirun=2"
+  ${_out1}/displacement-00001.csv ${_out1p}/displacement-00001.csv
+  --keys x,y --columns ux,uy)
+
+set(_out2 ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4/output-example2_ny4)
+set(_out2p ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4.mpirun=2/output-example2_ny4)
+contact_compare_tables(example2_ny4.reference_contact example2_ny4
+  ${_reference}/example2_NY4_contact.csv ${_out2}/contact-00001.csv
+  --keys x,y --columns ux,uy,uz,un,gap,rn,rt1,rt2 --rename un_down=un
+  --states state)
+contact_compare_tables(example2_ny4.reference_displacement example2_ny4
+  ${_reference}/example2_NY4_displacement.csv ${_out2}/displacement-00001.csv
+  --keys x,y,z --columns ux,uy,uz)
+contact_compare_tables(example2_ny4.one_vs_two_ranks
+  "example2_ny4;example2_ny4.mpirun=2"
+  ${_out2}/contact-00001.csv ${_out2p}/contact-00001.csv
+  --keys x,y --columns ux,uy,uz,rn,rt1,rt2 --states state)
+contact_compare_tables(example2_ny4.one_vs_two_ranks_displacement
+  "example2_ny4;example2_ny4.mpirun=2"
+  ${_out2}/displacement-00001.csv ${_out2p}/displacement-00001.csv
+  --keys x,y,z --columns ux,uy,uz)
