@@ -69,8 +69,22 @@ namespace
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return;
       }
-    Simulator<dim> simulator(prm, MPI_COMM_WORLD);
-    simulator.run();
+    // Rethrow a failure only once the simulator (and its TimerOutput, which
+    // would complain about an exception in flight) is gone.
+    std::exception_ptr failure;
+    {
+      Simulator<dim> simulator(prm, MPI_COMM_WORLD);
+      try
+        {
+          simulator.run();
+        }
+      catch (...)
+        {
+          failure = std::current_exception();
+        }
+    }
+    if (failure)
+      std::rethrow_exception(failure);
   }
 
   /// One line: the exception's own message without deal.II's frame.

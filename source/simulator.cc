@@ -206,11 +206,6 @@ namespace FrictionalContact
                 " in " + output_directory + "/" :
                 std::string())
           << std::endl;
-
-    if (output.writes_files() || statistics.enabled())
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        write_file_atomically(output_directory + "/parameters.prm",
-                              parameters_as_run);
   }
 
 
@@ -381,6 +376,12 @@ namespace FrictionalContact
 
     {
       TimerOutput::Scope scope(timer, "Output");
+      // The parameters go with the first results, so that a run that fails
+      // before leaves an existing output folder as it was.
+      if ((output.writes_files() || statistics.enabled()) &&
+          Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        write_file_atomically(output_directory + "/parameters.prm",
+                              parameters_as_run);
       output.write(1, 1., body, contact, u, results);
       statistics.add("Increment", 1);
       statistics.add("Time", 1.);

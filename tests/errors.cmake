@@ -1,1 +1,43 @@
-return()
+# Bad input and failed solves: each tests/errors/<name>.prm starts with a
+# line "# ERROR <exit code>: <regular expression>" and must make the program
+# exit with that code and that message, once, without a stack trace, and
+# without touching the files in its folder (a 'statistics' file from an
+# earlier run is put there first). A line "# MPI: N" runs it on N ranks.
+
+file(GLOB _error_scenes ${CMAKE_CURRENT_SOURCE_DIR}/errors/*.prm)
+foreach(_scene ${_error_scenes})
+  get_filename_component(_base ${_scene} NAME_WE)
+  file(STRINGS ${_scene} _header REGEX "^# ERROR [0-9]+: ")
+  if(NOT _header)
+    message(FATAL_ERROR "${_scene} needs a first line '# ERROR <code>: <regex>'")
+  endif()
+  string(REGEX REPLACE "^# ERROR ([0-9]+): (.*)$" "\\1" _code "${_header}")
+  string(REGEX REPLACE "^# ERROR ([0-9]+): (.*)$" "\\2" _regex "${_header}")
+  file(STRINGS ${_scene} _mpi REGEX "^# MPI: [0-9]+")
+  set(_ranks 0)
+  if(_mpi)
+    string(REGEX REPLACE "^# MPI: ([0-9]+).*$" "\\1" _ranks "${_mpi}")
+  endif()
+
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/errors/${_base})
+  configure_file(${_scene} ${_directory}/${_base}.prm @ONLY)
+  file(WRITE ${_directory}/output-error/statistics "# results of an earlier run\n")
+  set(_arguments ${_base}.prm)
+  if(_base STREQUAL "missing_file")
+    set(_arguments does_not_exist.prm)
+  elseif(_base STREQUAL "windows_line_endings")
+    file(READ ${_scene} _text)
+    string(REPLACE "\n" "\r\n" _text "${_text}")
+    file(WRITE ${_directory}/${_base}.prm "${_text}")
+  endif()
+  add_test(NAME errors/${_base}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_error.sh ${_ranks} ${_code}
+            "${_regex}" $<TARGET_FILE:contact> ${_arguments}
+    WORKING_DIRECTORY ${_directory})
+  set(_processors 1)
+  if(_ranks GREATER 0)
+    set(_processors ${_ranks})
+  endif()
+  set_tests_properties(errors/${_base} PROPERTIES
+    ENVIRONMENT "${_environment}" PROCESSORS ${_processors})
+endforeach()
