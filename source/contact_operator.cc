@@ -141,6 +141,8 @@ namespace FrictionalContact
 
     nodes.reserve(found.size());
     gap.reserve(found.size());
+    if (cone.mu > 0)
+      tangents.reserve(found.size());
     for (const auto &[dof, node] : found)
       {
         nodes.push_back(node);
