@@ -66,16 +66,13 @@ namespace FrictionalContact
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Relative tolerance",
-                      "1e-6",
+                      "1e-10",
                       Patterns::Double(0., 1.),
-                      "CG reduces the residual of each linear solve by this "
-                      "factor. A primal step solves for du_{k+1} - du_k, so "
-                      "this is relative to the current force residual "
-                      "p + T r - K du_k; the paper's Matlab pcg was relative "
-                      "to |b| instead, which stops CG (and the outer loop) "
-                      "as soon as the step is below 1e-10 |b|. The outer "
-                      "iterations stay the same down to 1e-3 (measured on "
-                      "examples I and II), so the default leaves a margin.");
+                      "CG reduces the residual of an elastic solve (a scene "
+                      "without contact, and the solves inside the "
+                      "eigenvalue computation) by this factor. The primal "
+                      "steps of the contact solver have their own tolerance, "
+                      "<Contact solver/Primal step tolerance>.");
     prm.declare_entry("Maximum iterations",
                       "10000",
                       Patterns::Integer(1),

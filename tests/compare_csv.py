@@ -5,6 +5,8 @@ relative tolerance (max |a - b| over the rows, divided by max |a|).
 
 usage: compare_csv.py A.csv B.csv --keys x,y --columns ux,uy[,...]
            [--rename A_name=B_name ...] [--tolerance 1e-8] [--states state]
+       compare_csv.py A.csv --exact "ux=0.05*x" "uy=-0.0125*y" [--tolerance]
+The second form compares columns of A with formulas of its coordinates.
 """
 import argparse
 import csv
@@ -17,12 +19,31 @@ def read(path, rename):
     return [{rename.get(k, k): v for k, v in row.items()} for row in rows]
 
 
+def compare_with_formulas(rows, args):
+    ok = True
+    for item in args.exact:
+        column, formula = item.split("=", 1)
+        exact = [eval(formula, {}, {c: float(row[c]) for c in "xyz" if c in row})
+                 for row in rows]
+        scale = max(abs(e) for e in exact) or 1.0
+        error = max(abs(float(row[column]) - e)
+                    for row, e in zip(rows, exact)) / scale
+        passed = error <= args.tolerance
+        ok = ok and passed
+        print(f"{column} against {formula}: relative difference {error:.2e} "
+              f"({'within' if passed else 'ABOVE'} {args.tolerance:g})")
+    print("PASSED" if ok else "FAILED")
+    return 0 if ok else 1
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("a")
-    parser.add_argument("b")
-    parser.add_argument("--keys", required=True)
-    parser.add_argument("--columns", required=True)
+    parser.add_argument("b", nargs="?")
+    parser.add_argument("--keys")
+    parser.add_argument("--columns")
+    parser.add_argument("--exact", nargs="*", default=[],
+                        help="column=formula in x, y, z")
     parser.add_argument("--rename", nargs="*", default=[],
                         help="column renames for the first file, old=new")
     parser.add_argument("--tolerance", type=float, default=1e-8)
@@ -31,6 +52,8 @@ def main():
     args = parser.parse_args()
 
     rename = dict(item.split("=") for item in args.rename)
+    if args.exact:
+        return compare_with_formulas(read(args.a, rename), args)
     a_rows, b_rows = read(args.a, rename), read(args.b, {})
     keys = args.keys.split(",")
 

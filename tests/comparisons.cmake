@@ -47,3 +47,17 @@ contact_compare_tables(example2_ny4.one_vs_two_ranks_displacement
   "example2_ny4;example2_ny4.mpirun=2"
   ${_out2}/displacement-00001.csv ${_out2p}/displacement-00001.csv
   --keys x,y,z --columns ux,uy,uz)
+
+# Patch tests: the elastic solution against the exact linear one.
+set_tests_properties(patch_test_2d PROPERTIES FIXTURES_SETUP patch_test_2d)
+add_test(NAME patch_test_2d.exact
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+    ${CMAKE_CURRENT_BINARY_DIR}/patch_test_2d/output-patch_test_2d/displacement-00001.csv
+    --exact "ux=0.05*x" "uy=-0.0125*y" --tolerance 1e-8)
+set_tests_properties(patch_test_2d.exact PROPERTIES FIXTURES_REQUIRED patch_test_2d)
+set_tests_properties(patch_test_3d.mpirun=2 PROPERTIES FIXTURES_SETUP patch_test_3d)
+add_test(NAME patch_test_3d.exact
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+    ${CMAKE_CURRENT_BINARY_DIR}/patch_test_3d.mpirun=2/output-patch_test_3d/displacement-00001.csv
+    --exact "ux=0.05*x" "uy=-0.0125*y" "uz=-0.0125*z" --tolerance 1e-8)
+set_tests_properties(patch_test_3d.exact PROPERTIES FIXTURES_REQUIRED patch_test_3d)

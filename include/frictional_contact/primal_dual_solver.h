@@ -44,6 +44,7 @@ namespace FrictionalContact
   private:
     double                    initial_alpha;
     double                    tolerance;
+    double                    step_tolerance;
     unsigned int              max_iterations;
     unsigned int              report_every;
     const ConditionalOStream &pcout;

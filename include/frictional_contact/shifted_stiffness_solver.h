@@ -61,7 +61,7 @@ namespace FrictionalContact
           const Vector &b,
           const double tolerance);
 
-    /// The relative tolerance users set for the primal step.
+    /// The relative tolerance of elastic solves.
     double
     relative_tolerance() const
     {
