@@ -115,7 +115,7 @@ namespace FrictionalContact
       text += "vtu every increment";
     if (write_csv)
       text += std::string(text.empty() ? "" : ", ") + "csv tables";
-    return text.empty() ? "none" : text;
+    return text;
   }
 
 

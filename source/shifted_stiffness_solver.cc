@@ -98,6 +98,12 @@ namespace FrictionalContact
                       "2",
                       Patterns::Integer(1),
                       "Chebyshev smoother sweeps of the AMG (>= 1).");
+    prm.declare_entry("AMG near null space",
+                      "rigid body modes",
+                      Patterns::Selection("rigid body modes|translations"),
+                      "The modes ML's aggregation preserves: all rigid-body "
+                      "modes (translations and rotations) or translations "
+                      "only, as DoFTools::extract_constant_modes gives.");
     prm.declare_entry("AMG aggregation threshold",
                       "1e-4",
                       Patterns::Double(0., 1.),
@@ -117,6 +123,7 @@ namespace FrictionalContact
     rebuild_factor        = prm.get_double("AMG rebuild factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    translations_only = prm.get("AMG near null space") == "translations";
     prm.leave_subsection();
   }
 
@@ -204,8 +211,8 @@ namespace FrictionalContact
     data.set_parameters(parameters, unused_constant_modes, matrix);
 
     // Near null space: the rigid-body modes, nodal blocks of dim dofs.
-    const unsigned int n_modes = modes.size();
-    const int          dim     = n_modes == 3 ? 2 : 3;
+    const int          dim     = modes.size() == 3 ? 2 : 3;
+    const unsigned int n_modes = translations_only ? dim : modes.size();
     Epetra_MultiVector null_space(
       matrix.trilinos_matrix().OperatorDomainMap(), n_modes);
     for (unsigned int m = 0; m < n_modes; ++m)

@@ -200,11 +200,11 @@ namespace FrictionalContact
       }
     else
       pcout << "Contact: none (one linear elastic solve)" << std::endl;
-    pcout << "Output: " << output.describe()
-          << (statistics.enabled() ? ", statistics" : "")
-          << (output.writes_files() || statistics.enabled() ?
-                " in " + output_directory + "/" :
-                std::string())
+    std::string written = output.describe();
+    if (statistics.enabled())
+      written += (written.empty() ? "" : ", ") + std::string("statistics");
+    pcout << "Output: "
+          << (written.empty() ? "nothing" : written + " in " + output_directory + "/")
           << std::endl;
   }
 

@@ -51,7 +51,7 @@ namespace FrictionalContact
       return write_vtu || write_csv;
     }
 
-    /// "vtu every increment, csv tables"
+    /// "vtu every increment, csv tables", or "" if nothing is written.
     std::string
     describe() const;
 

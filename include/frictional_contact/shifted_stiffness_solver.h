@@ -93,6 +93,7 @@ namespace FrictionalContact
     double       rebuild_factor;
     unsigned int smoother_sweeps;
     double       aggregation_threshold;
+    bool         translations_only;
 
     const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
     std::vector<std::vector<double>>      modes;
