@@ -59,6 +59,14 @@ namespace FrictionalContact
     prm.enter_subsection("Obstacle");
     PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
       prm, "plane", "The rigid obstacle's shape.");
+    prm.declare_entry("Rigid displacement",
+                      dim == 2 ? "0; 0" : "0; 0; 0",
+                      Patterns::Anything(),
+                      "The obstacle's rigid translation as a function of "
+                      "time t (muParser, one expression per component, "
+                      "separated by ';'), from where its parameters put it. "
+                      "Example, pressing and then dragging: "
+                      "'0.1 * max(t - 1, 0); -0.01 * min(t, 1)'.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -82,6 +90,10 @@ namespace FrictionalContact
         names.id("Contact/Contact boundaries", item));
     prm.enter_subsection("Obstacle");
     obstacle = PluginRegistry<Obstacle::Interface<dim>>::create(prm);
+    rigid_displacement =
+      std::make_unique<TimeFunction>("Contact/Obstacle/Rigid displacement",
+                                     prm.get("Rigid displacement"),
+                                     dim);
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -95,7 +107,6 @@ namespace FrictionalContact
   {
     nodes.clear();
     tangents.clear();
-    gap.clear();
 
     const IndexSet &owned = body.locally_owned_dofs();
     // Keyed by the first dof of the vertex: each vertex once, in dof order.
@@ -122,9 +133,8 @@ namespace FrictionalContact
                 if (all_fixed || !owned.is_element(first_dof))
                   continue;
                 boundaries_with_candidates.insert(face->boundary_id());
-                node.position      = face->vertex(v);
-                node.first_dof     = first_dof;
-                node.into_obstacle = -obstacle->outward_normal(node.position);
+                node.position  = face->vertex(v);
+                node.first_dof = first_dof;
                 found.emplace(first_dof, node);
               }
 
@@ -140,27 +150,50 @@ namespace FrictionalContact
                          "its nodes");
 
     nodes.reserve(found.size());
-    gap.reserve(found.size());
-    if (cone.mu > 0)
-      tangents.reserve(found.size());
     for (const auto &[dof, node] : found)
-      {
-        nodes.push_back(node);
-        gap.push_back(obstacle->signed_distance(node.position));
-        if (cone.mu > 0)
-          tangents.push_back(tangents_to<dim>(-node.into_obstacle));
-      }
+      nodes.push_back(node);
+    if (cone.mu > 0)
+      tangents.resize(nodes.size());
     n_global = Utilities::MPI::sum<types::global_dof_index>(
       nodes.size(), body.get_mpi_communicator());
     mpi_communicator = body.get_mpi_communicator();
+    move_obstacle(Tensor<1, dim>());
   }
 
 
 
   template <int dim>
   Tensor<1, dim>
-  ContactOperator<dim>::frame_transpose(const unsigned int j,
-                                        Tensor<1, dim>     v) const
+  ContactOperator<dim>::obstacle_displacement(const double t) const
+  {
+    Tensor<1, dim> displacement;
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement[d] = rigid_displacement->value(t, d);
+    return displacement;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::move_obstacle(const Tensor<1, dim> &displacement)
+  {
+    obstacle_shift = displacement;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const Tensor<1, dim> normal =
+          obstacle->outward_normal(nodes[j].position - displacement);
+        nodes[j].into_obstacle = -normal;
+        if (!tangents.empty())
+          tangents[j] = tangents_to<dim>(normal);
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_local(const unsigned int j, Tensor<1, dim> v) const
   {
     for (unsigned int c = 0; c < dim; ++c)
       if (!nodes[j].free[c])
@@ -265,8 +298,7 @@ namespace FrictionalContact
   ContactOperator<dim>::memory_consumption() const
   {
     return nodes.capacity() * sizeof(Node) +
-           tangents.capacity() * sizeof(tangents[0]) +
-           gap.capacity() * sizeof(double);
+           tangents.capacity() * sizeof(tangents[0]);
   }
 
 

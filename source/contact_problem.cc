@@ -20,8 +20,8 @@ namespace FrictionalContact
     double local[2]                     = {0., 0.};
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
-        const Tensor<1, dim> u_j = contact.local_part(j, du);
-        const double         g_j = contact.gaps()[j];
+        const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
+        const double         g_j = problem.gaps[j];
         Tensor<1, dim>       v   = u_j;
         v[0] = -g_j - mu * FrictionCone<dim>::tangential_norm(u_j) + u_j[0];
         local[0] += v * r[j];

@@ -99,6 +99,8 @@ namespace FrictionalContact
         prm.leave_subsection();
     }
 
+    template Tensor<1, 1>
+    parse_vector<1>(const std::string &, const std::string &);
     template Tensor<1, 2>
     parse_vector<2>(const std::string &, const std::string &);
     template Tensor<1, 3>

@@ -47,6 +47,43 @@ namespace FrictionalContact
       write_file_atomically(file_name, text);
     }
 
+    /// The von Mises equivalent stress of the displacement field (in 2D
+    /// with the out-of-plane stress of plane stress or plane strain).
+    template <int dim>
+    class VonMisesStress : public DataPostprocessorScalar<dim>
+    {
+    public:
+      explicit VonMisesStress(const LinearElasticMaterial<dim> &material)
+        : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
+        , material(material)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<dealii::Vector<double>>        &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            Tensor<2, dim> gradient;
+            for (unsigned int d = 0; d < dim; ++d)
+              gradient[d] = inputs.solution_gradients[q][d];
+            const SymmetricTensor<2, dim> stress =
+              material.stress_strain_tensor() * symmetrize(gradient);
+            SymmetricTensor<2, 3> s;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                s[i][j] = stress[i][j];
+            if (dim == 2 && !material.plane_stress)
+              s[2][2] = material.poissons_ratio * (stress[0][0] + stress[1][1]);
+            computed[q](0) = std::sqrt(1.5 * deviator(s) * deviator(s));
+          }
+      }
+
+    private:
+      const LinearElasticMaterial<dim> &material;
+    };
+
     const char *state_name(const ContactState state)
     {
       switch (state)
@@ -74,6 +111,11 @@ namespace FrictionalContact
                       "Write VTU/PVTU files of every increment for ParaView "
                       "(displacement, contact reactions, gap, contact state), "
                       "listed with their times in solution.pvd.");
+    prm.declare_entry("Write vtu every",
+                      "1",
+                      Patterns::Integer(1),
+                      "Write the VTU files of every n-th increment (and of "
+                      "the last one).");
     prm.declare_entry("Write csv tables",
                       "false",
                       Patterns::Bool(),
@@ -99,7 +141,8 @@ namespace FrictionalContact
   {
     prm.enter_subsection("Output");
     write_vtu = prm.get_bool("Write vtu");
-    write_csv = prm.get_bool("Write csv tables");
+    write_csv   = prm.get_bool("Write csv tables");
+    write_every = prm.get_integer("Write vtu every");
     n_groups  = prm.get_integer("Number of grouped files");
     prm.leave_subsection();
   }
@@ -112,7 +155,9 @@ namespace FrictionalContact
   {
     std::string text;
     if (write_vtu)
-      text += "vtu every increment";
+      text += write_every == 1 ? "vtu every increment" :
+                                 "vtu every " + std::to_string(write_every) +
+                                   " increments";
     if (write_csv)
       text += std::string(text.empty() ? "" : ", ") + "csv tables";
     return text;
@@ -122,21 +167,23 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  OutputWriter<dim>::write(const unsigned int          increment,
-                           const double                time,
-                           const ElasticBody<dim>     &body,
-                           const ContactOperator<dim> &contact,
-                           const Vector               &u,
-                           const ContactResults<dim>  &results)
+  OutputWriter<dim>::write(const unsigned int                increment,
+                           const double                      time,
+                           const bool                        last_increment,
+                           const ElasticBody<dim>           &body,
+                           const ContactOperator<dim>       &contact,
+                           const LinearElasticMaterial<dim> &material,
+                           const Vector                     &u,
+                           const ContactResults<dim>        &results)
   {
-    if (!writes_files())
+    if (!writes_files() || (increment % write_every != 0 && !last_increment))
       return;
     const MPI_Comm comm = body.get_mpi_communicator();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(directory + "/solution");
     MPI_Barrier(comm);
     if (write_vtu)
-      write_vtu_files(increment, time, body, contact, u, results);
+      write_vtu_files(increment, time, body, contact, material, u, results);
     if (write_csv)
       write_csv_files(increment, body, contact, u, results);
   }
@@ -145,12 +192,13 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  OutputWriter<dim>::write_vtu_files(const unsigned int          increment,
-                                     const double                time,
-                                     const ElasticBody<dim>     &body,
-                                     const ContactOperator<dim> &contact,
-                                     const Vector               &u,
-                                     const ContactResults<dim>  &results)
+  OutputWriter<dim>::write_vtu_files(const unsigned int                increment,
+                                     const double                      time,
+                                     const ElasticBody<dim>           &body,
+                                     const ContactOperator<dim>       &contact,
+                                     const LinearElasticMaterial<dim> &material,
+                                     const Vector                     &u,
+                                     const ContactResults<dim>        &results)
   {
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
     const MPI_Comm         comm        = body.get_mpi_communicator();
@@ -231,6 +279,8 @@ namespace FrictionalContact
                                                       "contact_reaction_increment"),
                              DataOut<dim>::type_dof_data,
                              vector_field);
+    const VonMisesStress<dim> von_mises(material);
+    data_out.add_data_vector(u_ghosted, von_mises);
     data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
     data_out.add_data_vector(scalar_dof_handler,
                              state_ghosted,

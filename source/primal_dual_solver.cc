@@ -83,7 +83,7 @@ namespace FrictionalContact
     const FrictionCone<dim>    &cone    = contact.friction_cone();
     const double                mu      = cone.mu;
     const unsigned int          c_local = contact.n_local();
-    const std::vector<double>  &g       = contact.gaps();
+    const std::vector<double>  &g       = problem.gaps;
     const unsigned int amg_setups_before = linear_solver.n_amg_setups;
 
     Vector du_hat(du), step(du), K_du(du), T_r(du), rhs(du), scratch(du);
@@ -98,8 +98,8 @@ namespace FrictionalContact
         // Dual step (lines 4-7): modified gap, then projection onto F.
         for (unsigned int j = 0; j < c_local; ++j)
           {
-            const Tensor<1, dim> u_j     = contact.local_part(j, du);
-            const Tensor<1, dim> u_hat_j = contact.local_part(j, du_hat);
+            const Tensor<1, dim> u_j     = problem.relative_displacement(j, du);
+            const Tensor<1, dim> u_hat_j = problem.relative_displacement(j, du_hat);
             const double         g_tilde =
               g[j] + mu * FrictionCone<dim>::tangential_norm(u_j);
             Tensor<1, dim> s = r[j] - alpha * u_hat_j;

@@ -84,6 +84,7 @@ namespace FrictionalContact
     LinearElasticMaterial<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
     ContactOperator<dim>::declare_parameters(prm);
+    LoadingHistory::declare_parameters(prm);
 
     prm.enter_subsection("Contact solver");
     prm.declare_entry("Eigenvalue tolerance",
@@ -140,6 +141,7 @@ namespace FrictionalContact
     , contact_solver(prm, pcout)
     , output(prm, output_directory)
     , statistics(prm, output_directory, comm)
+    , loading(prm)
     , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
   {
     prm.enter_subsection("Geometry");
@@ -216,113 +218,143 @@ namespace FrictionalContact
   {
     setup();
     linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
+    u = body.make_vector();
+    contact_forces.assign(contact.n_local(), Tensor<1, dim>());
+
     if (contact.active())
-      solve_contact();
-    else
-      solve_elastic();
+      {
+        TimerOutput::Scope scope(timer, "Smallest eigenvalue of K");
+        sigma_T = contact.largest_singular_value();
+        const SmallestEigenvalue eigenvalue =
+          compute_smallest_eigenvalue(body.stiffness_matrix(),
+                                      linear_solver,
+                                      eigenvalue_tolerance,
+                                      lanczos_vectors);
+        mu_pi = eigenvalue.value;
+        pcout << "Solver: accelerated primal-dual (Kanno, Algorithm 2)"
+              << std::endl
+              << "    sigma_T = " << Input::to_text(sigma_T)
+              << " (largest singular value of T)" << std::endl
+              << "    mu_pi = " << scientific(mu_pi, 6)
+              << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
+              << scientific(eigenvalue.rayleigh_quotient, 6) << ")"
+              << std::endl
+              << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
+              << eigenvalue.cg_iterations << " CG iterations" << std::endl;
+      }
+    pcout << "Loading: " << loading.describe() << std::endl;
+
+    for (unsigned int l = 0; l < loading.increment_times().size(); ++l)
+      solve_increment(l);
     timer.print_wall_time_statistics(mpi_communicator);
   }
 
 
 
   template <int dim>
-  void
-  Simulator<dim>::solve_elastic()
+  IncrementalProblem<dim>
+  Simulator<dim>::incremental_problem(
+    const unsigned int                   l,
+    const TrilinosWrappers::MPI::Vector &load) const
   {
-    TrilinosWrappers::MPI::Vector u = body.make_vector();
-    SolveStatistics               result;
-    {
-      TimerOutput::Scope scope(timer, "Elastic solve");
-      const Timer        wall;
-      const double       tolerance =
-        linear_solver.relative_tolerance() * body.load_vector().l2_norm();
-      result.cg_iterations =
-        linear_solver.solve(0., u, body.load_vector(), tolerance);
-      result.iterations = 1;
-      result.amg_setups = linear_solver.n_amg_setups;
-      result.converged  = true;
-      result.seconds    = wall.wall_time();
-    }
-    body.get_constraints().distribute(u);
-    pcout << "Elastic solve: " << result.cg_iterations << " CG iterations ("
-          << linear_solver.last_preconditioner << ")" << std::endl;
-    finish_increment(u, ContactResults<dim>(), result);
+    IncrementalProblem<dim> problem{body.stiffness_matrix(), load, contact};
+    problem.largest_singular_value_T = sigma_T;
+    problem.smallest_eigenvalue_K    = mu_pi;
+    const double t      = loading.increment_times()[l];
+    const double t_prev = l > 0 ? loading.increment_times()[l - 1] : 0.;
+    const Tensor<1, dim> motion =
+      contact.obstacle_displacement(t) - contact.obstacle_displacement(t_prev);
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l.
+        problem.gaps.push_back(contact.reference_gap(j) -
+                               contact.local_part(j, u)[0]);
+        Tensor<1, dim> slip = contact.to_local(j, motion);
+        slip[0]             = 0;
+        problem.obstacle_slip.push_back(slip);
+      }
+    return problem;
   }
 
 
 
   template <int dim>
-  void
-  Simulator<dim>::solve_contact()
+  SolveStatistics
+  Simulator<dim>::solve_increment(const unsigned int l)
   {
-    IncrementalProblem<dim> problem{body.stiffness_matrix(),
-                                    body.load_vector(),
-                                    contact};
-    problem.largest_singular_value_T = contact.largest_singular_value();
-    {
-      TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
-      const SmallestEigenvalue mu_pi =
-        compute_smallest_eigenvalue(body.stiffness_matrix(),
-                                    linear_solver,
-                                    eigenvalue_tolerance,
-                                    lanczos_vectors);
-      problem.smallest_eigenvalue_K = mu_pi.value;
-      pcout << "Solver: accelerated primal-dual (Kanno, Algorithm 2)"
-            << std::endl
-            << "    sigma_T = " << Input::to_text(problem.largest_singular_value_T)
-            << " (largest singular value of T)" << std::endl
-            << "    mu_pi = " << scientific(mu_pi.value, 6)
-            << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
-            << scientific(mu_pi.rayleigh_quotient, 6) << ")" << std::endl
-            << "-- mu_pi took " << mu_pi.n_solves << " solves with K, "
-            << mu_pi.cg_iterations << " CG iterations" << std::endl;
-    }
+    const double t = loading.increment_times()[l];
+    contact.move_obstacle(contact.obstacle_displacement(t));
+
+    // p = p^{l+1} - K u^l.
+    TrilinosWrappers::MPI::Vector load = body.make_vector();
+    body.stiffness_matrix().vmult(load, u);
+    load.sadd(-1., loading.load_factor(t), body.load_vector());
 
     TrilinosWrappers::MPI::Vector du = body.make_vector();
-    std::vector<Tensor<1, dim>>   r(contact.n_local());
     SolveStatistics               result;
-    {
-      TimerOutput::Scope scope(timer, "Contact solve");
-      result = contact_solver.solve(problem, linear_solver, du, r, write_history);
-    }
-
-    const Residuals &res = result.residuals;
-    pcout << "Increment 1: "
-          << (result.converged ? "converged" : "did NOT converge") << " after "
-          << result.iterations << " primal-dual iterations, "
-          << result.cg_iterations << " CG iterations, " << result.amg_setups
-          << " AMG set-ups" << std::endl
-          << "    residuals: force balance " << scientific(res.force_balance)
-          << ", complementarity " << scientific(res.complementarity)
-          << ", penetration " << scientific(res.penetration) << std::endl
-          << "-- contact solve wall time " << result.seconds << " s"
-          << std::endl;
-    if (!result.converged)
-      throw SolverError("increment 1: " + result.failure +
-                        ". Residuals: force balance " +
-                        scientific(res.force_balance) + ", complementarity " +
-                        scientific(res.complementarity) + ", penetration " +
-                        scientific(res.penetration) +
-                        ". Nothing was written for this increment");
-
+    ContactResults<dim>           results;
+    if (!contact.active())
+      {
+        TimerOutput::Scope scope(timer, "Elastic solve");
+        const Timer        wall;
+        const unsigned int setups_before = linear_solver.n_amg_setups;
+        result.cg_iterations = linear_solver.solve(
+          0., du, load, linear_solver.relative_tolerance() * load.l2_norm());
+        result.iterations = 1;
+        result.amg_setups = linear_solver.n_amg_setups - setups_before;
+        result.converged  = true;
+        result.seconds    = wall.wall_time();
+      }
+    else
+      {
+        const IncrementalProblem<dim> problem = incremental_problem(l, load);
+        // Warm start: the reactions of the previous increment, du = 0.
+        std::vector<Tensor<1, dim>> r(contact.n_local());
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          r[j] = contact.friction_cone().project(
+            contact.to_local(j, contact_forces[j]));
+        {
+          TimerOutput::Scope scope(timer, "Contact solve");
+          result =
+            contact_solver.solve(problem, linear_solver, du, r, write_history);
+        }
+        if (!result.converged)
+          {
+            const Residuals &res = result.residuals;
+            throw SolverError(
+              "increment " + std::to_string(l + 1) + " (t = " +
+              Input::to_text(t) + "): " + result.failure +
+              ". Residuals: force balance " + scientific(res.force_balance) +
+              ", complementarity " + scientific(res.complementarity) +
+              ", penetration " + scientific(res.penetration) +
+              ". The increments before it are written; this one is not");
+          }
+        results = contact_results(problem, du, r);
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          contact_forces[j] = contact.to_cartesian(j, r[j]);
+      }
     body.get_constraints().distribute(du);
-    finish_increment(du, contact_results(du, r), result);
+    u += du;
+    report_increment(l, du, results, result);
+    return result;
   }
 
 
 
   template <int dim>
   ContactResults<dim>
-  Simulator<dim>::contact_results(const TrilinosWrappers::MPI::Vector &du,
+  Simulator<dim>::contact_results(const IncrementalProblem<dim>       &problem,
+                                  const TrilinosWrappers::MPI::Vector &du,
                                   const std::vector<Tensor<1, dim>>   &r) const
   {
     ContactResults<dim> results;
-    results.reaction           = r;
-    results.reaction_increment = r;
+    results.reaction = r;
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
-        results.local_displacement.push_back(contact.local_part(j, du));
-        results.gap.push_back(contact.gaps()[j] -
+        results.reaction_increment.push_back(
+          r[j] - contact.to_local(j, contact_forces[j]));
+        results.local_displacement.push_back(problem.relative_displacement(j, du));
+        results.gap.push_back(problem.gaps[j] -
                               results.local_displacement.back()[0]);
         results.state.push_back(contact.friction_cone().state(r[j]));
       }
@@ -333,10 +365,15 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  Simulator<dim>::finish_increment(const TrilinosWrappers::MPI::Vector &u,
+  Simulator<dim>::report_increment(const unsigned int                   l,
+                                   const TrilinosWrappers::MPI::Vector &du,
                                    const ContactResults<dim>           &results,
                                    const SolveStatistics               &result)
   {
+    const double       t      = loading.increment_times()[l];
+    const unsigned int n      = loading.increment_times().size();
+    const bool         last   = l + 1 == n;
+
     // Counts of free / stick / slip and the total contact force.
     unsigned int   counts[3] = {0, 0, 0};
     Tensor<1, dim> contact_force;
@@ -345,84 +382,109 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < results.state.size(); ++j)
       {
         ++counts[static_cast<int>(results.state[j])];
-        const Tensor<1, dim> force = contact.to_cartesian(j, results.reaction[j]);
-        contact_force += force;
+        contact_force += contact_forces[j];
         normal_force -= results.reaction[j][0];
         Tensor<1, dim> normal_part;
         normal_part[0] = results.reaction[j][0];
-        tangential_force += force - contact.to_cartesian(j, normal_part);
+        tangential_force += contact_forces[j] - contact.to_cartesian(j, normal_part);
       }
     Utilities::MPI::sum(counts, mpi_communicator, counts);
     contact_force    = Utilities::MPI::sum(contact_force, mpi_communicator);
     normal_force     = Utilities::MPI::sum(normal_force, mpi_communicator);
     tangential_force = Utilities::MPI::sum(tangential_force, mpi_communicator);
 
-    TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
-    u_ghosted                               = u;
-    const Tensor<1, dim> support = body.support_reaction(u_ghosted, 1.);
-    const Tensor<1, dim> load    = body.total_load();
-
-    const types::global_dof_index c = contact.active() ? contact.n_candidates() : 0;
+    const Residuals &res = result.residuals;
+    pcout << "Increment " << l + 1 << "/" << n << ", t = " << Input::to_text(t);
     if (contact.active())
-      pcout << "    candidates: " << percent(counts[0], c) << " free, "
-            << percent(counts[2], c) << " slip, " << percent(counts[1], c)
-            << " stick (" << counts[0] << " / " << counts[2] << " / "
-            << counts[1] << " of " << c << ")" << std::endl;
-    pcout << "    force balance: load " << to_text(load) << " + contact "
-          << to_text(contact_force) << " + supports " << to_text(support)
-          << " = " << scientific((load + contact_force + support).norm())
-          << std::endl;
-    pcout << "    max |u| = " << Input::to_text(u.linfty_norm()) << std::endl;
+      pcout << ": " << result.iterations << " primal-dual iterations, "
+            << result.cg_iterations << " CG iterations, " << result.amg_setups
+            << " AMG set-ups; residuals " << scientific(res.force_balance)
+            << ' ' << scientific(res.complementarity) << ' '
+            << scientific(res.penetration) << "; free/slip/stick " << counts[0]
+            << '/' << counts[2] << '/' << counts[1] << std::endl;
+    else
+      pcout << ": elastic solve, " << result.cg_iterations << " CG iterations ("
+            << linear_solver.last_preconditioner << ")" << std::endl;
+    pcout << "-- increment " << l + 1 << " solve wall time " << result.seconds
+          << " s" << std::endl;
 
-    {
-      TimerOutput::Scope scope(timer, "Output");
-      // The parameters go with the first results, so that a run that fails
-      // before leaves an existing output folder as it was.
-      if ((output.writes_files() || statistics.enabled()) &&
-          Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        write_file_atomically(output_directory + "/parameters.prm",
-                              parameters_as_run);
-      output.write(1, 1., body, contact, u, results);
-      statistics.add("Increment", 1);
-      statistics.add("Time", 1.);
-      statistics.add("Free dofs d", static_cast<unsigned long>(body.n_free_dofs()));
-      statistics.add("Contact candidates c", static_cast<unsigned long>(c));
-      statistics.add("Primal-dual iterations", result.iterations);
-      statistics.add("CG iterations", result.cg_iterations);
-      statistics.add("AMG setups", result.amg_setups);
-      statistics.add("Solve wall time (s)", result.seconds);
-      statistics.add_scientific("Force balance residual",
-                                result.residuals.force_balance);
-      statistics.add_scientific("Complementarity residual",
-                                result.residuals.complementarity);
-      statistics.add_scientific("Penetration residual",
-                                result.residuals.penetration);
-      statistics.add("Free nodes", counts[0]);
-      statistics.add("Stick nodes", counts[1]);
-      statistics.add("Slip nodes", counts[2]);
-      statistics.add_scientific("Normal contact force", normal_force);
-      statistics.add_scientific("Tangential contact force",
-                                tangential_force.norm());
-      statistics.add_scientific("Max displacement", u.linfty_norm());
-      statistics.write();
+    if (last)
+      {
+        TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
+        u_ghosted                               = u;
+        const Tensor<1, dim> support =
+          body.support_reaction(u_ghosted, loading.load_factor(t));
+        const Tensor<1, dim> load =
+          loading.load_factor(t) * body.total_load();
+        const types::global_dof_index c = contact.n_candidates();
+        pcout << "State at t = " << Input::to_text(t) << ":" << std::endl;
+        if (contact.active())
+          pcout << "    residuals: force balance "
+                << scientific(res.force_balance) << ", complementarity "
+                << scientific(res.complementarity) << ", penetration "
+                << scientific(res.penetration) << std::endl
+                << "    candidates: " << percent(counts[0], c) << " free, "
+                << percent(counts[2], c) << " slip, " << percent(counts[1], c)
+                << " stick (" << counts[0] << " / " << counts[2] << " / "
+                << counts[1] << " of " << c << ")" << std::endl;
+        pcout << "    force balance: load " << to_text(load) << " + contact "
+              << to_text(contact_force) << " + supports " << to_text(support)
+              << " = " << scientific((load + contact_force + support).norm())
+              << std::endl
+              << "    max |u| = " << Input::to_text(u.linfty_norm()) << std::endl;
+      }
 
-      if (write_history && !result.history.empty() &&
-          Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        {
-          std::ostringstream text;
-          text << "# iteration seconds force_balance complementarity "
-                  "penetration step cg_iterations\n"
-               << std::setprecision(9);
-          for (const HistoryRow &row : result.history)
-            text << row.iteration << ' ' << row.seconds << ' '
-                 << row.residuals.force_balance << ' '
-                 << row.residuals.complementarity << ' '
-                 << row.residuals.penetration << ' ' << row.step << ' '
-                 << row.cg_iterations << '\n';
-          write_file_atomically(output_directory + "/history-00001.txt",
-                                text.str());
-        }
-    }
+    TimerOutput::Scope scope(timer, "Output");
+    // The parameters go with the first results, so that a run that fails
+    // before leaves an existing output folder as it was.
+    if (l == 0 && (output.writes_files() || statistics.enabled()) &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      write_file_atomically(output_directory + "/parameters.prm",
+                            parameters_as_run);
+    output.write(l + 1, t, last, body, contact, material, u, results);
+
+    statistics.add("Increment", l + 1);
+    statistics.add("Time", t);
+    statistics.add("Load factor", loading.load_factor(t));
+    statistics.add("Free dofs d", static_cast<std::uint64_t>(body.n_free_dofs()));
+    statistics.add("Contact candidates c",
+                   static_cast<std::uint64_t>(contact.active() ? contact.n_candidates() : 0));
+    statistics.add("Primal-dual iterations", result.iterations);
+    statistics.add("CG iterations", result.cg_iterations);
+    statistics.add("AMG setups", result.amg_setups);
+    statistics.add("Solve wall time (s)", result.seconds);
+    statistics.add_scientific("Force balance residual", res.force_balance);
+    statistics.add_scientific("Complementarity residual", res.complementarity);
+    statistics.add_scientific("Penetration residual", res.penetration);
+    statistics.add("Free nodes", counts[0]);
+    statistics.add("Stick nodes", counts[1]);
+    statistics.add("Slip nodes", counts[2]);
+    statistics.add_scientific("Normal contact force", normal_force);
+    statistics.add_scientific("Tangential contact force", tangential_force.norm());
+    statistics.add_scientific("Max displacement", u.linfty_norm());
+    statistics.add_scientific("Max displacement increment", du.linfty_norm());
+    statistics.write();
+
+    if (write_history && !result.history.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ostringstream text;
+        text << "# Convergence history of increment " << l + 1 << " (t = " << t
+             << "): one row per primal-dual iteration.\n"
+             << "# iteration seconds force_balance complementarity "
+                "penetration step cg_iterations\n"
+             << std::setprecision(9);
+        for (const HistoryRow &row : result.history)
+          text << row.iteration << ' ' << row.seconds << ' '
+               << row.residuals.force_balance << ' '
+               << row.residuals.complementarity << ' '
+               << row.residuals.penetration << ' ' << row.step << ' '
+               << row.cg_iterations << '\n';
+        std::ostringstream name;
+        name << output_directory << "/history-" << std::setw(5)
+             << std::setfill('0') << l + 1 << ".txt";
+        write_file_atomically(name.str(), text.str());
+      }
   }
 
   template class Simulator<2>;

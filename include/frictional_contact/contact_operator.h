@@ -7,6 +7,7 @@
 #include <frictional_contact/elastic_body.h>
 #include <frictional_contact/friction_cone.h>
 #include <frictional_contact/input.h>
+#include <frictional_contact/loading_history.h>
 #include <frictional_contact/obstacle/interface.h>
 
 #include <array>
@@ -52,11 +53,30 @@ namespace FrictionalContact
 
     /**
      * Finds the candidates of @p body on the contact boundaries and builds
-     * their frames and initial gaps (at the reference configuration).
-     * Throws an InputError if a contact boundary has no candidate.
+     * their frames for the obstacle at its initial position. Throws an
+     * InputError if a contact boundary has no candidate.
      */
     void
     setup(const ElasticBody<dim> &body, const BoundaryNames &names);
+
+    /// The obstacle's prescribed rigid displacement at time @p t.
+    Tensor<1, dim>
+    obstacle_displacement(const double t) const;
+
+    /**
+     * Moves the obstacle rigidly by @p displacement (from its position in
+     * the parameter file) and rebuilds the frames there: the normal of
+     * candidate j is the obstacle's at x_j - displacement.
+     */
+    void
+    move_obstacle(const Tensor<1, dim> &displacement);
+
+    /// Signed distance from the reference position of j to the obstacle.
+    double
+    reference_gap(const unsigned int j) const
+    {
+      return obstacle->signed_distance(nodes[j].position - obstacle_shift);
+    }
 
     /// Number of candidates on this rank.
     unsigned int
@@ -87,19 +107,17 @@ namespace FrictionalContact
     Tensor<1, dim>
     local_part(const unsigned int j, const Vector &u) const
     {
-      return frame_transpose(j, nodal_value(j, u));
+      return to_local(j, nodal_value(j, u));
     }
+
+    /// (t_n^T v, t_1^T v, ...) for a Cartesian vector @p v at node j; the
+    /// components held by fixed boundaries are ignored.
+    Tensor<1, dim>
+    to_local(const unsigned int j, Tensor<1, dim> v) const;
 
     /// f = T r for the reactions @p r of the local candidates.
     void
     apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const;
-
-    /// Gaps before the increment, g_j (length).
-    const std::vector<double> &
-    gaps() const
-    {
-      return gap;
-    }
 
     /// The largest singular value of T, computed from the nodal blocks.
     double
@@ -146,7 +164,7 @@ namespace FrictionalContact
       return cone.mu;
     }
 
-    /// Bytes held for the candidates (frames, dofs, gaps).
+    /// Bytes held for the candidates (frames, dofs).
     std::size_t
     memory_consumption() const;
 
@@ -167,17 +185,14 @@ namespace FrictionalContact
       Tensor<1, dim> into_obstacle;
     };
 
-    /// (t_n^T v, t_1^T v, ...) with fixed components of v ignored.
-    Tensor<1, dim>
-    frame_transpose(const unsigned int j, Tensor<1, dim> v) const;
-
     FrictionCone<dim>                            cone;
     std::set<types::boundary_id>                 contact_boundaries;
     std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
     std::vector<Node>                            nodes;
     /// T_t,j; empty without friction (the tangential operator is not needed).
     std::vector<std::array<Tensor<1, dim>, dim - 1>> tangents;
-    std::vector<double>                          gap;
+    std::unique_ptr<TimeFunction>                rigid_displacement;
+    Tensor<1, dim>                               obstacle_shift;
     types::global_dof_index                      n_global = 0;
     MPI_Comm                                     mpi_communicator = MPI_COMM_WORLD;
   };

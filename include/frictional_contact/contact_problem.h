@@ -12,8 +12,9 @@ namespace FrictionalContact
 {
   /**
    * One incremental problem of the paper, eq. (9): find du and r with
-   * K du - p = T r and the cone complementarity at every candidate, for
-   * the gaps g_j held by the contact operator.
+   * K du - p = T r and the cone complementarity at every candidate, where
+   * the displacement of node j relative to the obstacle is
+   * T_j^T du - obstacle_slip[j].
    */
   template <int dim>
   struct IncrementalProblem
@@ -25,6 +26,20 @@ namespace FrictionalContact
     /// The paper's sigma_T and mu_pi.
     double largest_singular_value_T = 1;
     double smallest_eigenvalue_K    = 0;
+    /// g_j: the gap of candidate j before the increment, with the obstacle
+    /// already at its position at the end of the increment.
+    std::vector<double> gaps;
+    /// The obstacle's displacement increment in the frame of j, tangential
+    /// components only (component 0 is zero: the gap has it).
+    std::vector<Tensor<1, dim>> obstacle_slip;
+
+    /// (t_n,j^T du, T_t,j^T du - obstacle's tangential motion)
+    Tensor<1, dim>
+    relative_displacement(const unsigned int j,
+                          const TrilinosWrappers::MPI::Vector &du) const
+    {
+      return contact.local_part(j, du) - obstacle_slip[j];
+    }
   };
 
   /// The paper's three residuals, eqs. (24)-(26).

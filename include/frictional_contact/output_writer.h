@@ -17,10 +17,12 @@ namespace FrictionalContact
   template <int dim>
   struct ContactResults
   {
-    /// Total reaction r^{l+1} and its increment, in the local frame (r_n, r_t).
+    /// Total reaction r^{l+1} and its change over the increment, in the
+    /// local frame (r_n, r_t).
     std::vector<Tensor<1, dim>> reaction;
     std::vector<Tensor<1, dim>> reaction_increment;
-    /// Normal and tangential displacement increment, T_j^T du.
+    /// Normal and tangential displacement increment relative to the
+    /// obstacle, T_j^T du - T_j^T (obstacle's displacement increment).
     std::vector<Tensor<1, dim>> local_displacement;
     /// Gap remaining after the increment, g_j - t_n,j^T du (linearised).
     std::vector<double>       gap;
@@ -56,25 +58,28 @@ namespace FrictionalContact
     describe() const;
 
     /**
-     * Writes increment @p increment at time @p time. @p u is the total
-     * displacement with ghost entries.
+     * Writes increment @p increment (counted from 1) at time @p time, if it
+     * is due (every n-th, and the last). @p u is the total displacement.
      */
     void
-    write(const unsigned int          increment,
-          const double                time,
-          const ElasticBody<dim>     &body,
-          const ContactOperator<dim> &contact,
-          const Vector               &u,
-          const ContactResults<dim>  &results);
+    write(const unsigned int                increment,
+          const double                      time,
+          const bool                        last_increment,
+          const ElasticBody<dim>           &body,
+          const ContactOperator<dim>       &contact,
+          const LinearElasticMaterial<dim> &material,
+          const Vector                     &u,
+          const ContactResults<dim>        &results);
 
   private:
     void
-    write_vtu_files(const unsigned int          increment,
-                    const double                time,
-                    const ElasticBody<dim>     &body,
-                    const ContactOperator<dim> &contact,
-                    const Vector               &u,
-                    const ContactResults<dim>  &results);
+    write_vtu_files(const unsigned int                increment,
+                    const double                      time,
+                    const ElasticBody<dim>           &body,
+                    const ContactOperator<dim>       &contact,
+                    const LinearElasticMaterial<dim> &material,
+                    const Vector                     &u,
+                    const ContactResults<dim>        &results);
 
     void
     write_csv_files(const unsigned int          increment,
@@ -86,6 +91,7 @@ namespace FrictionalContact
     std::string directory;
     bool        write_vtu;
     bool        write_csv;
+    unsigned int write_every;
     unsigned int n_groups;
 
     FE_Q<dim>       scalar_fe;

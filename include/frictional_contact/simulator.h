@@ -9,6 +9,7 @@
 #include <frictional_contact/contact_operator.h>
 #include <frictional_contact/elastic_body.h>
 #include <frictional_contact/geometry/interface.h>
+#include <frictional_contact/loading_history.h>
 #include <frictional_contact/material.h>
 #include <frictional_contact/output_writer.h>
 #include <frictional_contact/primal_dual_solver.h>
@@ -55,22 +56,26 @@ namespace FrictionalContact
     }
 
   private:
-    /// The plain elastic problem K u = p (no contact boundary).
-    void
-    solve_elastic();
+    /// Solves increment @p l and adds it to the state; returns its statistics.
+    SolveStatistics
+    solve_increment(const unsigned int l);
 
-    void
-    solve_contact();
+    /// The contact problem of increment @p l, for the load vector @p load.
+    IncrementalProblem<dim>
+    incremental_problem(const unsigned int                   l,
+                        const TrilinosWrappers::MPI::Vector &load) const;
 
-    /// Prints the force balance and writes output and statistics.
+    /// Prints the increment's line, writes output and statistics.
     void
-    finish_increment(const TrilinosWrappers::MPI::Vector &u,
+    report_increment(const unsigned int                   l,
+                     const TrilinosWrappers::MPI::Vector &du,
                      const ContactResults<dim>           &results,
                      const SolveStatistics               &statistics);
 
     /// Results per candidate for the increment du with reactions r.
     ContactResults<dim>
-    contact_results(const TrilinosWrappers::MPI::Vector &du,
+    contact_results(const IncrementalProblem<dim>       &problem,
+                    const TrilinosWrappers::MPI::Vector &du,
                     const std::vector<Tensor<1, dim>>   &r) const;
 
     MPI_Comm           mpi_communicator;
@@ -89,7 +94,15 @@ namespace FrictionalContact
     PrimalDualSolver<dim>                     contact_solver;
     OutputWriter<dim>                         output;
     StatisticsFile                            statistics;
+    LoadingHistory                            loading;
     TimerOutput                               timer;
+
+    /// The state after the last finished increment: total displacement,
+    /// and the contact force T_j r_j of each local candidate.
+    TrilinosWrappers::MPI::Vector u;
+    std::vector<Tensor<1, dim>>   contact_forces;
+    double                        sigma_T = 1;
+    double                        mu_pi   = 0;
 
     double       eigenvalue_tolerance;
     unsigned int lanczos_vectors;
