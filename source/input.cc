@@ -22,7 +22,7 @@ namespace FrictionalContact
     to_text(const double value)
     {
       std::ostringstream stream;
-      stream << value;
+      stream << (value == 0 ? 0. : value); // no "-0"
       return stream.str();
     }
 

@@ -138,8 +138,9 @@ namespace FrictionalContact
     stiffness       = &K;
     modes           = std::move(rigid_body_modes);
     stiffness_floor = smallest_eigenvalue_estimate;
-    amg_sigma       = -1;
-    jacobi_sigma    = -1;
+    elastic_amg.sigma = -1;
+    shifted_amg.sigma = -1;
+    jacobi_sigma      = -1;
 
     diagonal.reinit(K.locally_owned_domain_indices(), K.get_mpi_communicator());
     for (const auto i : K.locally_owned_domain_indices())
@@ -177,28 +178,27 @@ namespace FrictionalContact
 
 
 
-  void
-  ShiftedStiffnessSolver::build_amg(const double sigma)
+  const TrilinosWrappers::PreconditionAMG &
+  ShiftedStiffnessSolver::amg_for(const double sigma)
   {
-    if (amg_sigma >= 0 &&
-        std::abs(sigma - amg_sigma) <=
-          (rebuild_factor - 1.) * (std::min(sigma, amg_sigma) + stiffness_floor))
-      return;
+    AMG &amg = sigma == 0 ? elastic_amg : shifted_amg;
+    if (amg.sigma >= 0 &&
+        std::abs(sigma - amg.sigma) <=
+          (rebuild_factor - 1.) * (std::min(sigma, amg.sigma) + stiffness_floor))
+      return amg.preconditioner;
 
     Timer timer;
-    amg.clear(); // ML keeps a reference to the matrix it was built on
+    amg.preconditioner.clear(); // ML keeps a reference to its matrix
     // Without a shift the AMG is built on K itself, without a copy.
     if (sigma != 0)
       {
-        shifted_matrix.copy_from(*stiffness);
+        amg.matrix.copy_from(*stiffness);
         for (const auto i : stiffness->locally_owned_range_indices())
-          shifted_matrix.add(i, i, sigma);
-        shifted_matrix.compress(VectorOperation::add);
+          amg.matrix.add(i, i, sigma);
+        amg.matrix.compress(VectorOperation::add);
       }
-    else
-      shifted_matrix.clear();
     const TrilinosWrappers::SparseMatrix &matrix =
-      sigma != 0 ? shifted_matrix : *stiffness;
+      sigma != 0 ? amg.matrix : *stiffness;
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -213,8 +213,8 @@ namespace FrictionalContact
     // Near null space: the rigid-body modes, nodal blocks of dim dofs.
     const int          dim     = modes.size() == 3 ? 2 : 3;
     const unsigned int n_modes = translations_only ? dim : modes.size();
-    Epetra_MultiVector null_space(
-      matrix.trilinos_matrix().OperatorDomainMap(), n_modes);
+    Epetra_MultiVector null_space(matrix.trilinos_matrix().OperatorDomainMap(),
+                                  n_modes);
     for (unsigned int m = 0; m < n_modes; ++m)
       for (unsigned int row = 0; row < modes[m].size(); ++row)
         null_space[m][row] = modes[m][row];
@@ -223,10 +223,11 @@ namespace FrictionalContact
     parameters.set("null space: dimension", static_cast<int>(n_modes));
     parameters.set("null space: vectors", null_space.Values());
 
-    amg.initialize(matrix, parameters);
-    amg_sigma = sigma;
+    amg.preconditioner.initialize(matrix, parameters);
+    amg.sigma = sigma;
     ++n_amg_setups;
     amg_setup_seconds += timer.wall_time();
+    return amg.preconditioner;
   }
 
 
@@ -250,7 +251,7 @@ namespace FrictionalContact
           }
         else
           {
-            build_amg(sigma);
+            const auto &amg     = amg_for(sigma);
             last_preconditioner = "AMG";
             cg.solve(op, x, b, amg);
           }

@@ -39,7 +39,7 @@ namespace FrictionalContact
   {
     table.add_value(column, value);
     table.set_scientific(column, true);
-    table.set_precision(column, 6);
+    table.set_precision(column, 10);
   }
 
 

@@ -61,3 +61,30 @@ add_test(NAME patch_test_3d.exact
     ${CMAKE_CURRENT_BINARY_DIR}/patch_test_3d.mpirun=2/output-patch_test_3d/displacement-00001.csv
     --exact "ux=0.05*x" "uy=-0.0125*y" "uz=-0.0125*z" --tolerance 1e-8)
 set_tests_properties(patch_test_3d.exact PROPERTIES FIXTURES_REQUIRED patch_test_3d)
+
+# Loading history: while the floor slides under the body (increments 11 to
+# 16), the tangential contact force is mu = 0.5 times the normal one.
+set_tests_properties(press_and_drag PROPERTIES FIXTURES_SETUP press_and_drag)
+add_test(NAME press_and_drag.sliding_force
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/press_and_drag/output-press-and-drag/statistics
+    --rows 11-16 --ratio "Tangential contact force" "Normal contact force" 0.5
+    --tolerance 1e-6)
+set_tests_properties(press_and_drag.sliding_force PROPERTIES FIXTURES_REQUIRED press_and_drag)
+
+# A loading history of one increment is the single solve.
+set_tests_properties(one_increment PROPERTIES FIXTURES_SETUP one_increment)
+contact_compare_tables(one_increment.same_as_single_solve "example1_ny10;one_increment"
+  ${_out1}/displacement-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/one_increment/output-one_increment/displacement-00001.csv
+  --keys x,y --columns ux,uy --tolerance 1e-12)
+
+# Frictionless contact does not depend on the path: two increments of
+# proportional loading end where one does.
+set_tests_properties(example1_frictionless PROPERTIES FIXTURES_SETUP example1_frictionless)
+set_tests_properties(frictionless_two_increments PROPERTIES FIXTURES_SETUP frictionless_two_increments)
+contact_compare_tables(frictionless_two_increments.path_independent
+  "example1_frictionless;frictionless_two_increments"
+  ${CMAKE_CURRENT_BINARY_DIR}/example1_frictionless/output-example1_frictionless/contact-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/frictionless_two_increments/output-frictionless_two_increments/contact-00002.csv
+  --keys x --columns ux,uy,rn --tolerance 1e-8 --states state)

@@ -27,7 +27,8 @@ namespace FrictionalContact
    * - otherwise Trilinos ML (smoothed aggregation with the rigid-body modes
    *   as near null space) built on K + sigma_ref I, reused while sigma stays
    *   within a factor "AMG rebuild factor" of sigma_ref (or both are below
-   *   the stiffness scale, where the shift does not matter).
+   *   the stiffness scale, where the shift does not matter). The AMG of the
+   *   plain elastic problem (sigma = 0) is kept separately.
    */
   class ShiftedStiffnessSolver
   {
@@ -79,8 +80,17 @@ namespace FrictionalContact
     bool
     use_jacobi(const double sigma) const;
 
-    void
-    build_amg(const double sigma);
+    /// An AMG hierarchy and the matrix K + sigma I it was built on.
+    struct AMG
+    {
+      TrilinosWrappers::PreconditionAMG preconditioner;
+      TrilinosWrappers::SparseMatrix    matrix;
+      double                            sigma = -1;
+    };
+
+    /// The AMG for @p sigma, (re)built if needed.
+    const TrilinosWrappers::PreconditionAMG &
+    amg_for(const double sigma);
 
     void
     build_jacobi(const double sigma);
@@ -101,9 +111,11 @@ namespace FrictionalContact
     /// A lower bound for K's spectrum (0 if unknown), to judge shifts.
     double                                stiffness_floor = 0;
 
-    TrilinosWrappers::PreconditionAMG amg;
-    TrilinosWrappers::SparseMatrix    shifted_matrix;
-    double                            amg_sigma = -1;
+    /// One AMG for the elastic problem (sigma = 0) and one for the shifted
+    /// problems of the primal steps, so that alternating between them
+    /// does not rebuild either.
+    AMG elastic_amg;
+    AMG shifted_amg;
 
     Vector diagonal;
     Vector inverse_diagonal;

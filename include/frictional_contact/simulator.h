@@ -60,6 +60,11 @@ namespace FrictionalContact
     SolveStatistics
     solve_increment(const unsigned int l);
 
+    /// Whether no candidate reaches the obstacle after the increment @p du.
+    bool
+    separates(const IncrementalProblem<dim>       &problem,
+              const TrilinosWrappers::MPI::Vector &du) const;
+
     /// The contact problem of increment @p l, for the load vector @p load.
     IncrementalProblem<dim>
     incremental_problem(const unsigned int                   l,
@@ -106,6 +111,7 @@ namespace FrictionalContact
 
     double       eigenvalue_tolerance;
     unsigned int lanczos_vectors;
+    bool         try_elastic_first;
     bool         write_history;
   };
 } // namespace FrictionalContact
