@@ -227,6 +227,21 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  ContactOperator<dim>::set_nodal_values(
+    const std::vector<Tensor<1, dim>> &values,
+    Vector                            &f) const
+  {
+    f = 0;
+    double *entries = f.begin();
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      for (unsigned int c = 0; c < dim; ++c)
+        entries[nodes[j].local_dofs[c]] = values[j][c];
+  }
+
+
+
+  template <int dim>
+  void
   ContactOperator<dim>::apply(const std::vector<Tensor<1, dim>> &r,
                               Vector                            &f) const
   {

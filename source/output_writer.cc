@@ -176,13 +176,15 @@ namespace FrictionalContact
                            const Vector                     &u,
                            const ContactResults<dim>        &results)
   {
-    if (!writes_files() || (increment % write_every != 0 && !last_increment))
+    const bool vtu_due =
+      write_vtu && (increment % write_every == 0 || last_increment);
+    if (!vtu_due && !write_csv)
       return;
     const MPI_Comm comm = body.get_mpi_communicator();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(directory + "/solution");
     MPI_Barrier(comm);
-    if (write_vtu)
+    if (vtu_due)
       write_vtu_files(increment, time, body, contact, material, u, results);
     if (write_csv)
       write_csv_files(increment, body, contact, u, results);

@@ -6,6 +6,14 @@
 #include <frictional_contact/simulator.h>
 #include <frictional_contact/stiffness_spectrum.h>
 
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <csignal>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -70,6 +78,14 @@ namespace FrictionalContact
                       "output",
                       Patterns::DirectoryName(),
                       "Where results are written (created if needed).");
+    prm.declare_entry("Resume computation",
+                      "false",
+                      Patterns::Selection("false|true|auto"),
+                      "true: continue the loading history from the checkpoint "
+                      "in the output directory (written after each increment, "
+                      "see Output/Checkpoint every), for example after the "
+                      "run was killed; the number of MPI ranks may differ. "
+                      "auto: resume if there is a checkpoint, else start.");
 
     prm.enter_subsection("Geometry");
     PluginRegistry<Geometry::Interface<dim>>::declare_parameters(
@@ -112,6 +128,12 @@ namespace FrictionalContact
     OutputWriter<dim>::declare_parameters(prm);
     StatisticsFile::declare_parameters(prm);
     prm.enter_subsection("Output");
+    prm.declare_entry("Checkpoint every",
+                      "1",
+                      Patterns::Integer(0),
+                      "With more than one increment, save the state for "
+                      "<Resume computation> after every n-th increment "
+                      "(0: never).");
     prm.declare_entry("Write convergence history",
                       "false",
                       Patterns::Bool(),
@@ -151,11 +173,14 @@ namespace FrictionalContact
     , statistics(prm, output_directory, comm)
     , loading(prm)
     , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , checkpoint(output_directory, comm)
   {
     prm.enter_subsection("Geometry");
-    const unsigned int refinements = prm.get_integer("Global refinements");
+    global_refinements = prm.get_integer("Global refinements");
     prm.leave_subsection();
-    triangulation.refine_global(geometry->n_built_in_refinements() + refinements);
+    const std::string resume_choice = prm.get("Resume computation");
+    resume = resume_choice == "true" ||
+             (resume_choice == "auto" && checkpoint.exists());
 
     prm.enter_subsection("Contact solver");
     eigenvalue_tolerance = prm.get_double("Eigenvalue tolerance");
@@ -163,7 +188,10 @@ namespace FrictionalContact
     try_elastic_first    = prm.get_bool("Try the elastic solution first");
     prm.leave_subsection();
     prm.enter_subsection("Output");
-    write_history = prm.get_bool("Write convergence history");
+    write_history    = prm.get_bool("Write convergence history");
+    checkpoint_every = loading.increment_times().size() > 1 ?
+                         prm.get_integer("Checkpoint every") :
+                         0;
     prm.leave_subsection();
 
     std::ostringstream parameters;
@@ -179,6 +207,11 @@ namespace FrictionalContact
   {
     {
       TimerOutput::Scope scope(timer, "Setup");
+      if (resume)
+        checkpoint.load_mesh(triangulation);
+      else
+        triangulation.refine_global(geometry->n_built_in_refinements() +
+                                    global_refinements);
       body.setup();
       if (contact.active())
         contact.setup(body, boundary_names);
@@ -229,6 +262,8 @@ namespace FrictionalContact
     linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
     u = body.make_vector();
     contact_forces.assign(contact.n_local(), Tensor<1, dim>());
+    if (resume)
+      first_increment = load_checkpoint();
 
     if (contact.active())
       {
@@ -253,7 +288,7 @@ namespace FrictionalContact
       }
     pcout << "Loading: " << loading.describe() << std::endl;
 
-    for (unsigned int l = 0; l < loading.increment_times().size(); ++l)
+    for (unsigned int l = first_increment; l < loading.increment_times().size(); ++l)
       solve_increment(l);
     timer.print_wall_time_statistics(mpi_communicator);
   }
@@ -533,6 +568,67 @@ namespace FrictionalContact
              << std::setfill('0') << l + 1 << ".txt";
         write_file_atomically(name.str(), text.str());
       }
+
+    if (checkpoint_every > 0 && (l + 1) % checkpoint_every == 0 && !last)
+      {
+        save_checkpoint(l);
+        // For the restart test: die here, as a killed run would.
+        if (const char *kill = std::getenv("FRICTIONAL_CONTACT_KILL_AFTER_INCREMENT");
+            kill != nullptr && std::atoi(kill) == static_cast<int>(l + 1))
+          std::raise(SIGKILL);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_checkpoint(const unsigned int l) const
+  {
+    TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
+    u_ghosted                               = u;
+    // The contact forces as a nodal field, so that they move with the mesh.
+    TrilinosWrappers::MPI::Vector forces = body.make_vector();
+    contact.set_nodal_values(contact_forces, forces);
+    TrilinosWrappers::MPI::Vector forces_ghosted = body.make_ghosted_vector();
+    forces_ghosted                               = forces;
+
+    std::ostringstream             state;
+    boost::archive::text_oarchive archive(state);
+    const unsigned int             n_done = l + 1;
+    archive << n_done << statistics << output;
+    checkpoint.save(triangulation,
+                    body.get_dof_handler(),
+                    {&u_ghosted, &forces_ghosted},
+                    state.str());
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::load_checkpoint()
+  {
+    TrilinosWrappers::MPI::Vector forces = body.make_vector();
+    std::vector<TrilinosWrappers::MPI::Vector *> vectors = {&u, &forces};
+    checkpoint.load_vectors(body.get_dof_handler(), vectors);
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      contact_forces[j] = contact.nodal_value(j, forces);
+
+    std::istringstream             state(checkpoint.load_state());
+    boost::archive::text_iarchive archive(state);
+    unsigned int                   n_done = 0;
+    archive >> n_done >> statistics >> output;
+    if (n_done >= loading.increment_times().size())
+      throw InputError("<Resume computation>: the checkpoint in '" +
+                       checkpoint.path() + "' is after increment " +
+                       std::to_string(n_done) + ", but the loading history "
+                       "has only " + std::to_string(loading.increment_times().size()) +
+                       "; nothing is left to do");
+    pcout << "Resuming after increment " << n_done << " (t = "
+          << Input::to_text(loading.increment_times()[n_done - 1])
+          << ") from " << checkpoint.path() << std::endl;
+    return n_done;
   }
 
   template class Simulator<2>;

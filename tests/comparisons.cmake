@@ -88,3 +88,12 @@ contact_compare_tables(frictionless_two_increments.path_independent
   ${CMAKE_CURRENT_BINARY_DIR}/example1_frictionless/output-example1_frictionless/contact-00001.csv
   ${CMAKE_CURRENT_BINARY_DIR}/frictionless_two_increments/output-frictionless_two_increments/contact-00002.csv
   --keys x --columns ux,uy,rn --tolerance 1e-8 --states state)
+
+# Kill a run after a checkpoint, resume it on 2 ranks, compare with a run
+# that was not interrupted.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
+add_test(NAME restart
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
+set_tests_properties(restart PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)

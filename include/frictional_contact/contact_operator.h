@@ -115,6 +115,10 @@ namespace FrictionalContact
     Tensor<1, dim>
     to_local(const unsigned int j, Tensor<1, dim> v) const;
 
+    /// f = the Cartesian nodal @p values at the candidates, zero elsewhere.
+    void
+    set_nodal_values(const std::vector<Tensor<1, dim>> &values, Vector &f) const;
+
     /// f = T r for the reactions @p r of the local candidates.
     void
     apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const;

@@ -71,6 +71,14 @@ namespace FrictionalContact
           const Vector                     &u,
           const ContactResults<dim>        &results);
 
+    /// The increments written so far (for solution.pvd), for checkpoints.
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &times_and_names;
+    }
+
   private:
     void
     write_vtu_files(const unsigned int                increment,

@@ -6,6 +6,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <frictional_contact/boundary_conditions.h>
+#include <frictional_contact/checkpoint.h>
 #include <frictional_contact/contact_operator.h>
 #include <frictional_contact/elastic_body.h>
 #include <frictional_contact/geometry/interface.h>
@@ -70,6 +71,15 @@ namespace FrictionalContact
     incremental_problem(const unsigned int                   l,
                         const TrilinosWrappers::MPI::Vector &load) const;
 
+    /// Writes a checkpoint after increment @p l.
+    void
+    save_checkpoint(const unsigned int l) const;
+
+    /// Restores the state saved by save_checkpoint(); returns the number of
+    /// increments done.
+    unsigned int
+    load_checkpoint();
+
     /// Prints the increment's line, writes output and statistics.
     void
     report_increment(const unsigned int                   l,
@@ -109,6 +119,13 @@ namespace FrictionalContact
     double                        sigma_T = 1;
     double                        mu_pi   = 0;
 
+    Checkpoint<dim> checkpoint;
+    bool            resume;
+    unsigned int    checkpoint_every;
+    /// Increments finished before this run (when resuming).
+    unsigned int    first_increment = 0;
+
+    unsigned int global_refinements;
     double       eigenvalue_tolerance;
     unsigned int lanczos_vectors;
     bool         try_elastic_first;

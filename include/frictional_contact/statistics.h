@@ -46,6 +46,14 @@ namespace FrictionalContact
     void
     write() const;
 
+    /// The rows so far, for checkpoints.
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &table;
+    }
+
   private:
     bool        write_file;
     std::string file_name;

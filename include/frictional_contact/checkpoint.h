@@ -1,0 +1,64 @@
+#pragma once
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <string>
+#include <vector>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * The checkpoint of a run after a finished increment, in
+   * <output directory>/checkpoint: the refined mesh (p4est), nodal vectors
+   * (moved with the cells, so a run may resume on another number of MPI
+   * ranks) and a text blob with the rest of the state. A new checkpoint is
+   * written next to the old one and then put in its place, so a run killed
+   * while writing keeps the previous checkpoint.
+   */
+  template <int dim>
+  class Checkpoint
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    Checkpoint(const std::string &output_directory, const MPI_Comm comm);
+
+    /// Whether a complete checkpoint is there.
+    bool
+    exists() const;
+
+    /// Saves the mesh, the @p vectors (with ghost entries) and @p state.
+    void
+    save(const parallel::distributed::Triangulation<dim> &triangulation,
+         const DoFHandler<dim>                           &dof_handler,
+         const std::vector<const Vector *>               &vectors,
+         const std::string                               &state) const;
+
+    /// Refines the coarse mesh @p triangulation as it was saved.
+    void
+    load_mesh(parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    /// Fills @p vectors (without ghost entries, on the distributed dofs of
+    /// the loaded mesh), in the order they were saved.
+    void
+    load_vectors(const DoFHandler<dim> &dof_handler,
+                 std::vector<Vector *> &vectors) const;
+
+    std::string
+    load_state() const;
+
+    std::string
+    path() const
+    {
+      return directory;
+    }
+
+  private:
+    std::string directory;
+    MPI_Comm    comm;
+  };
+} // namespace FrictionalContact
