@@ -97,3 +97,10 @@ add_test(NAME restart
           ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
 set_tests_properties(restart PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)
+
+# The plotting script on a real convergence history: a PNG that is not empty.
+set_tests_properties(example1_history PROPERTIES FIXTURES_SETUP example1_history)
+add_test(NAME example1_history.plot
+  COMMAND sh -c "rm -f residuals.png && ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/plot_history.py -o residuals.png 'Algorithm 2=output-example1_history/history-00001.txt' && test $(head -c 4 residuals.png | od -An -c | tr -d ' ') = '211PNG' && test $(wc -c < residuals.png) -gt 20000 && echo 'residuals.png is a PNG of' $(wc -c < residuals.png) bytes"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/example1_history)
+set_tests_properties(example1_history.plot PROPERTIES FIXTURES_REQUIRED example1_history)
