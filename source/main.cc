@@ -22,6 +22,8 @@ namespace
     "documentation\n"
     "                             and its value (the defaults, or as the "
     "file sets them)\n"
+    "  --json                     with --print-parameters: as JSON, with "
+    "defaults\n"
     "  --help                     this text\n"
     "  --version                  the program's version\n";
 
@@ -55,18 +57,28 @@ namespace
     return prm.get_integer("Dimension");
   }
 
+  enum class Task
+  {
+    run,
+    print_parameters,
+    print_parameters_as_json
+  };
+
   template <int dim>
   void
-  run(const std::string &file_name, const bool print_only)
+  run(const std::string &file_name, const Task task)
   {
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
     if (!file_name.empty())
       prm.parse_input(file_name);
-    if (print_only)
+    if (task != Task::run)
       {
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-          prm.print_parameters(std::cout, ParameterHandler::PRM);
+          prm.print_parameters(std::cout,
+                               task == Task::print_parameters ?
+                                 ParameterHandler::PRM :
+                                 ParameterHandler::JSON);
         return;
       }
     // Rethrow a failure only once the simulator (and its TimerOutput, which
@@ -116,6 +128,7 @@ main(int argc, char *argv[])
   const bool  is_root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::string file_name;
   bool        print_parameters = false;
+  bool        json             = false;
   try
     {
       for (int i = 1; i < argc; ++i)
@@ -136,6 +149,8 @@ main(int argc, char *argv[])
             }
           else if (argument == "--print-parameters")
             print_parameters = true;
+          else if (argument == "--json")
+            json = true;
           else if (!argument.empty() && argument[0] == '-')
             throw InputError("unknown option '" + argument +
                              "'; see contact --help");
@@ -155,10 +170,15 @@ main(int argc, char *argv[])
           read_parameter_file(file_name);
           dim = read_dimension(file_name);
         }
+      const Task task = !print_parameters ? Task::run :
+                        json              ? Task::print_parameters_as_json :
+                                            Task::print_parameters;
+      if (json && !print_parameters)
+        throw InputError("--json goes with --print-parameters; see contact --help");
       if (dim == 2)
-        run<2>(file_name, print_parameters);
+        run<2>(file_name, task);
       else
-        run<3>(file_name, print_parameters);
+        run<3>(file_name, task);
     }
   catch (const InputError &e)
     {

@@ -185,7 +185,7 @@ namespace FrictionalContact
       std::filesystem::create_directories(directory + "/solution");
     MPI_Barrier(comm);
     if (vtu_due)
-      write_vtu_files(increment, time, body, contact, material, u, results);
+      write_vtu_files(increment, time, last_increment, body, contact, material, u, results);
     if (write_csv)
       write_csv_files(increment, body, contact, u, results);
   }
@@ -196,6 +196,7 @@ namespace FrictionalContact
   void
   OutputWriter<dim>::write_vtu_files(const unsigned int                increment,
                                      const double                      time,
+                                     const bool                        last_increment,
                                      const ElasticBody<dim>           &body,
                                      const ContactOperator<dim>       &contact,
                                      const LinearElasticMaterial<dim> &material,
@@ -300,7 +301,8 @@ namespace FrictionalContact
       directory + "/solution/", "solution", increment, comm, 5, n_groups);
 
     times_and_names.emplace_back(time, "solution/" + pvtu);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    // A time series only for a loading history.
+    if (Utilities::MPI::this_mpi_process(comm) == 0 && !(increment == 1 && last_increment))
       {
         std::ostringstream pvd;
         DataOutBase::write_pvd_record(pvd, times_and_names);

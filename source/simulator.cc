@@ -244,6 +244,7 @@ namespace FrictionalContact
       }
     else
       pcout << "Contact: none (one linear elastic solve)" << std::endl;
+    pcout << "Loading: " << loading.describe() << std::endl;
     std::string written = output.describe();
     if (statistics.enabled())
       written += (written.empty() ? "" : ", ") + std::string("statistics");
@@ -286,8 +287,6 @@ namespace FrictionalContact
               << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
               << eigenvalue.cg_iterations << " CG iterations" << std::endl;
       }
-    pcout << "Loading: " << loading.describe() << std::endl;
-
     for (unsigned int l = first_increment; l < loading.increment_times().size(); ++l)
       solve_increment(l);
     timer.print_wall_time_statistics(mpi_communicator);
