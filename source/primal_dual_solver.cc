@@ -100,8 +100,9 @@ namespace FrictionalContact
           {
             const Tensor<1, dim> u_j     = problem.relative_displacement(j, du);
             const Tensor<1, dim> u_hat_j = problem.relative_displacement(j, du_hat);
-            const double         g_tilde =
-              g[j] + mu * FrictionCone<dim>::tangential_norm(u_j);
+            // The modified gap; without friction it is the gap itself.
+            const double g_tilde =
+              mu > 0 ? g[j] + mu * FrictionCone<dim>::tangential_norm(u_j) : g[j];
             Tensor<1, dim> s = r[j] - alpha * u_hat_j;
             s[0]             = r[j][0] + alpha * (g_tilde - u_hat_j[0]);
             r[j]             = cone.project(s);

@@ -268,28 +268,39 @@ namespace FrictionalContact
 
     if (contact.active())
       {
-        TimerOutput::Scope scope(timer, "Smallest eigenvalue of K");
         sigma_T = contact.largest_singular_value();
-        const SmallestEigenvalue eigenvalue =
-          compute_smallest_eigenvalue(body.stiffness_matrix(),
-                                      linear_solver,
-                                      eigenvalue_tolerance,
-                                      lanczos_vectors);
-        mu_pi = eigenvalue.value;
         pcout << "Solver: accelerated primal-dual (Kanno, Algorithm 2)"
               << std::endl
               << "    sigma_T = " << Input::to_text(sigma_T)
-              << " (largest singular value of T)" << std::endl
-              << "    mu_pi = " << scientific(mu_pi, 6)
-              << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
-              << scientific(eigenvalue.rayleigh_quotient, 6) << ")"
-              << std::endl
-              << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
-              << eigenvalue.cg_iterations << " CG iterations" << std::endl;
+              << " (largest singular value of T)" << std::endl;
       }
+
     for (unsigned int l = first_increment; l < loading.increment_times().size(); ++l)
       solve_increment(l);
     timer.print_wall_time_statistics(mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::smallest_eigenvalue_of_K()
+  {
+    if (mu_pi > 0)
+      return mu_pi;
+    TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
+    const SmallestEigenvalue eigenvalue =
+      compute_smallest_eigenvalue(body.stiffness_matrix(),
+                                  linear_solver,
+                                  eigenvalue_tolerance,
+                                  lanczos_vectors);
+    mu_pi = eigenvalue.value;
+    pcout << "    mu_pi = " << scientific(mu_pi, 6)
+          << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
+          << scientific(eigenvalue.rayleigh_quotient, 6) << ")" << std::endl
+          << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
+          << eigenvalue.cg_iterations << " CG iterations" << std::endl;
+    return mu_pi;
   }
 
 
@@ -302,7 +313,6 @@ namespace FrictionalContact
   {
     IncrementalProblem<dim> problem{body.stiffness_matrix(), load, contact};
     problem.largest_singular_value_T = sigma_T;
-    problem.smallest_eigenvalue_K    = mu_pi;
     const double t      = loading.increment_times()[l];
     const double t_prev = l > 0 ? loading.increment_times()[l - 1] : 0.;
     const Tensor<1, dim> motion =
@@ -361,7 +371,7 @@ namespace FrictionalContact
       }
     if (contact.active())
       {
-        const IncrementalProblem<dim> problem = incremental_problem(l, load);
+        IncrementalProblem<dim>     problem = incremental_problem(l, load);
         std::vector<Tensor<1, dim>>   r(contact.n_local());
         if (try_elastic_first && separates(problem, du))
           {
@@ -380,6 +390,7 @@ namespace FrictionalContact
               r[j] = contact.friction_cone().project(
                 contact.to_local(j, contact_forces[j]));
             du = 0;
+            problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K();
             const SolveStatistics elastic = result;
             {
               TimerOutput::Scope scope(timer, "Contact solve");

@@ -104,3 +104,11 @@ add_test(NAME example1_history.plot
   COMMAND sh -c "rm -f residuals.png && ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/plot_history.py -o residuals.png 'Algorithm 2=output-example1_history/history-00001.txt' && test $(head -c 4 residuals.png | od -An -c | tr -d ' ') = '211PNG' && test $(wc -c < residuals.png) -gt 20000 && echo 'residuals.png is a PNG of' $(wc -c < residuals.png) bytes"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/example1_history)
 set_tests_properties(example1_history.plot PROPERTIES FIXTURES_REQUIRED example1_history)
+
+# A contact scene where nothing touches gives the plain elastic solution.
+set_tests_properties(far_floor PROPERTIES FIXTURES_SETUP far_floor)
+set_tests_properties(no_contact PROPERTIES FIXTURES_SETUP no_contact)
+contact_compare_tables(far_floor.same_as_without_contact "far_floor;no_contact"
+  ${CMAKE_CURRENT_BINARY_DIR}/no_contact/output-no_contact/displacement-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/far_floor/output-far_floor/displacement-00001.csv
+  --keys x,y --columns ux,uy --tolerance 1e-10)

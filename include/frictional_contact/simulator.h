@@ -61,6 +61,10 @@ namespace FrictionalContact
     SolveStatistics
     solve_increment(const unsigned int l);
 
+    /// mu_pi, computed when the contact iteration first needs it.
+    double
+    smallest_eigenvalue_of_K();
+
     /// Whether no candidate reaches the obstacle after the increment @p du.
     bool
     separates(const IncrementalProblem<dim>       &problem,
