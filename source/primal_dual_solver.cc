@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/plugins.h>
 #include <frictional_contact/primal_dual_solver.h>
 
 #include <iomanip>
@@ -11,7 +12,6 @@ namespace FrictionalContact
   void
   PrimalDualSolver<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Contact solver");
     prm.declare_entry("Initial alpha",
                       "0.1",
                       Patterns::Double(0.),
@@ -40,32 +40,33 @@ namespace FrictionalContact
                       "iterations for example I at N_Y = 10). The outer "
                       "iterations stay the same down to 1e-3 (examples I "
                       "and II); the default leaves a margin.");
-    prm.declare_entry("Report every",
-                      "0",
-                      Patterns::Integer(0),
-                      "Print the residuals every this many iterations "
-                      "(0: only at the end).");
-    prm.leave_subsection();
   }
 
 
 
   template <int dim>
-  PrimalDualSolver<dim>::PrimalDualSolver(ParameterHandler         &prm,
-                                          const ConditionalOStream &pcout)
-    : pcout(pcout)
+  void
+  PrimalDualSolver<dim>::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Contact solver");
     initial_alpha  = prm.get_double("Initial alpha");
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
-    report_every   = prm.get_integer("Report every");
     step_tolerance = prm.get_double("Primal step tolerance");
-    prm.leave_subsection();
     if (!(initial_alpha > 0))
-      Input::fail("Contact solver/Initial alpha",
+      Input::fail("Contact solver/Accelerated primal-dual/Initial alpha",
                   Input::to_text(initial_alpha),
                   "a positive number is expected");
+  }
+
+
+
+  template <int dim>
+  std::string
+  PrimalDualSolver<dim>::describe() const
+  {
+    return "accelerated primal-dual (Kanno, Algorithm 2), alpha_0 = " +
+           Input::to_text(initial_alpha) + ", stop at |du_k+1 - du_k| <= " +
+           Input::to_text(tolerance);
   }
 
 
@@ -134,20 +135,14 @@ namespace FrictionalContact
         result.residuals =
           compute_residuals(problem, du, K_du, T_r, r, scratch);
 
+        const HistoryRow row{k + 1,
+                             timer.wall_time(),
+                             result.residuals,
+                             result.last_step,
+                             cg_iterations};
         if (record_history)
-          result.history.push_back({k + 1,
-                                    timer.wall_time(),
-                                    result.residuals,
-                                    result.last_step,
-                                    cg_iterations});
-        if (report_every > 0 && (k + 1) % report_every == 0)
-          pcout << "    iteration " << std::setw(6) << k + 1
-                << ": |du_k+1 - du_k| = " << std::setprecision(3)
-                << std::scientific << result.last_step << ", residuals "
-                << result.residuals.force_balance << ' '
-                << result.residuals.complementarity << ' '
-                << result.residuals.penetration << ", " << cg_iterations
-                << " CG iterations" << std::defaultfloat << std::endl;
+          result.history.push_back(row);
+        this->report(k + 1, row);
 
         if (!std::isfinite(result.last_step) || !result.residuals.finite())
           {
@@ -167,12 +162,17 @@ namespace FrictionalContact
                        " iterations (last |du_k+1 - du_k| = " +
                        Input::to_text(result.last_step) + ", tolerance " +
                        Input::to_text(tolerance) +
-                       "); raise <Contact solver/Maximum iterations>";
+                       "); raise <Contact solver/Accelerated primal-dual/"
+                       "Maximum iterations>";
     result.amg_setups = linear_solver.n_amg_setups - amg_setups_before;
     result.seconds    = timer.wall_time();
     return result;
   }
 
-  template class PrimalDualSolver<2>;
-  template class PrimalDualSolver<3>;
+  FRICTIONAL_CONTACT_REGISTER_PLUGIN(
+    ContactSolver,
+    PrimalDualSolver,
+    "accelerated primal-dual",
+    "Kanno's Algorithm 2 as published: thousands of iterations, each a "
+    "projection onto the friction cones and one CG solve with beta K + I.")
 } // namespace FrictionalContact

@@ -103,6 +103,16 @@ namespace FrictionalContact
     LoadingHistory::declare_parameters(prm);
 
     prm.enter_subsection("Contact solver");
+    PluginRegistry<ContactSolver<dim>>::declare_parameters(
+      prm,
+      "accelerated primal-dual",
+      "The method that solves each incremental contact problem.",
+      "Method");
+    prm.declare_entry("Report every",
+                      "0",
+                      Patterns::Integer(0),
+                      "Print the residuals every this many iterations of the "
+                      "contact solver (0: only one line per increment).");
     prm.declare_entry("Eigenvalue tolerance",
                       "1e-8",
                       Patterns::Double(0., 1.),
@@ -122,7 +132,6 @@ namespace FrictionalContact
                       "Lanczos vectors PARPACK keeps while computing mu_pi "
                       "(>= 4).");
     prm.leave_subsection();
-    PrimalDualSolver<dim>::declare_parameters(prm);
     ShiftedStiffnessSolver::declare_parameters(prm);
 
     OutputWriter<dim>::declare_parameters(prm);
@@ -168,7 +177,13 @@ namespace FrictionalContact
     , body(triangulation, material, boundary_conditions)
     , contact(prm, boundary_names)
     , linear_solver(prm)
-    , contact_solver(prm, pcout)
+    , contact_solver([&]() {
+      prm.enter_subsection("Contact solver");
+      auto method = PluginRegistry<ContactSolver<dim>>::create(prm, "Method");
+      method->set_output(pcout, prm.get_integer("Report every"));
+      prm.leave_subsection();
+      return method;
+    }())
     , output(prm, output_directory)
     , statistics(prm, output_directory, comm)
     , loading(prm)
@@ -269,8 +284,7 @@ namespace FrictionalContact
     if (contact.active())
       {
         sigma_T = contact.largest_singular_value();
-        pcout << "Solver: accelerated primal-dual (Kanno, Algorithm 2)"
-              << std::endl
+        pcout << "Solver: " << contact_solver->describe() << std::endl
               << "    sigma_T = " << Input::to_text(sigma_T)
               << " (largest singular value of T)" << std::endl;
       }
@@ -390,11 +404,12 @@ namespace FrictionalContact
               r[j] = contact.friction_cone().project(
                 contact.to_local(j, contact_forces[j]));
             du = 0;
-            problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K();
+            if (contact_solver->needs_smallest_eigenvalue())
+              problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K();
             const SolveStatistics elastic = result;
             {
               TimerOutput::Scope scope(timer, "Contact solve");
-              result = contact_solver.solve(
+              result = contact_solver->solve(
                 problem, linear_solver, du, r, write_history);
             }
             result.cg_iterations += elastic.cg_iterations;

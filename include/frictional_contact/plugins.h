@@ -16,8 +16,9 @@ namespace FrictionalContact
    * name a description, a function declaring the plugin's own parameters and
    * a factory. Plugins add themselves at program start with
    * FRICTIONAL_CONTACT_REGISTER_PLUGIN. The parameter file picks one by
-   * `set Model name = <name>` in the family's subsection; the plugin reads
-   * its parameters from a subsection named like the plugin.
+   * `set Model name = <name>` (or another selector entry) in the family's
+   * subsection; the plugin reads its parameters from a subsection named
+   * like the plugin.
    */
   template <typename InterfaceType>
   class PluginRegistry
@@ -38,14 +39,15 @@ namespace FrictionalContact
     }
 
     /**
-     * Declares `Model name` (a selection among the registered names, its
+     * Declares @p selector (a selection among the registered names, its
      * documentation made of the plugins' descriptions) and one subsection per
      * plugin, inside the subsection the caller has entered.
      */
     static void
     declare_parameters(ParameterHandler  &prm,
                        const std::string &default_name,
-                       const std::string &family_description)
+                       const std::string &family_description,
+                       const std::string &selector = "Model name")
     {
       std::string names, documentation = family_description + " Choices:";
       for (const auto &[name, plugin] : plugins())
@@ -53,7 +55,7 @@ namespace FrictionalContact
           names += (names.empty() ? "" : "|") + name;
           documentation += "\n'" + name + "': " + plugin.description;
         }
-      prm.declare_entry("Model name",
+      prm.declare_entry(selector,
                         default_name,
                         Patterns::Selection(names),
                         documentation);
@@ -67,14 +69,21 @@ namespace FrictionalContact
 
     /// Creates the chosen plugin and lets it parse its subsection.
     static std::unique_ptr<InterfaceType>
-    create(ParameterHandler &prm)
+    create(ParameterHandler &prm, const std::string &selector = "Model name")
     {
-      const std::string name   = prm.get("Model name");
+      const std::string name   = prm.get(selector);
       auto              plugin = plugins().at(name).create();
       prm.enter_subsection(subsection_name(name));
       plugin->parse_parameters(prm);
       prm.leave_subsection();
       return plugin;
+    }
+
+    /// The name of the chosen plugin.
+    static bool
+    has(const std::string &name)
+    {
+      return plugins().count(name) > 0;
     }
 
     /// "box" -> "Box", "from file" -> "From file".

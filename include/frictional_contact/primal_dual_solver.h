@@ -1,10 +1,6 @@
 #pragma once
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/parameter_handler.h>
-
-#include <frictional_contact/contact_problem.h>
-#include <frictional_contact/shifted_stiffness_solver.h>
+#include <frictional_contact/contact_solver.h>
 
 namespace FrictionalContact
 {
@@ -19,34 +15,38 @@ namespace FrictionalContact
    * |du_{k+1} - du_k| <= tolerance, as the paper.
    */
   template <int dim>
-  class PrimalDualSolver
+  class PrimalDualSolver : public ContactSolver<dim>
   {
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    /// Declares the entries of "Contact solver" that this method reads.
+    /// Declares the entries of its subsection of "Contact solver".
     static void
     declare_parameters(ParameterHandler &prm);
 
-    PrimalDualSolver(ParameterHandler &prm, const ConditionalOStream &pcout);
+    void
+    parse_parameters(ParameterHandler &prm) override;
 
-    /**
-     * Solves @p problem. @p du and @p r hold the initial iterate on entry
-     * and the last iterate on exit (whether or not it converged).
-     */
+    std::string
+    describe() const override;
+
+    bool
+    needs_smallest_eigenvalue() const override
+    {
+      return true;
+    }
+
     SolveStatistics
     solve(const IncrementalProblem<dim> &problem,
           ShiftedStiffnessSolver        &linear_solver,
           Vector                        &du,
           std::vector<Tensor<1, dim>>   &r,
-          const bool                     record_history) const;
+          const bool                     record_history) const override;
 
   private:
-    double                    initial_alpha;
-    double                    tolerance;
-    double                    step_tolerance;
-    unsigned int              max_iterations;
-    unsigned int              report_every;
-    const ConditionalOStream &pcout;
+    double       initial_alpha;
+    double       tolerance;
+    double       step_tolerance;
+    unsigned int max_iterations;
   };
 } // namespace FrictionalContact

@@ -13,7 +13,7 @@
 #include <frictional_contact/loading_history.h>
 #include <frictional_contact/material.h>
 #include <frictional_contact/output_writer.h>
-#include <frictional_contact/primal_dual_solver.h>
+#include <frictional_contact/contact_solver.h>
 #include <frictional_contact/shifted_stiffness_solver.h>
 #include <frictional_contact/statistics.h>
 
@@ -110,7 +110,7 @@ namespace FrictionalContact
     ElasticBody<dim>                          body;
     ContactOperator<dim>                      contact;
     ShiftedStiffnessSolver                    linear_solver;
-    PrimalDualSolver<dim>                     contact_solver;
+    std::unique_ptr<ContactSolver<dim>>       contact_solver;
     OutputWriter<dim>                         output;
     StatisticsFile                            statistics;
     LoadingHistory                            loading;
