@@ -124,6 +124,7 @@ namespace FrictionalContact
                 for (unsigned int c = 0; c < dim; ++c)
                   {
                     const auto g = face->vertex_dof_index(v, c);
+                    node.dofs[c] = g;
                     node.free[c] = !body.get_constraints().is_constrained(g);
                     all_fixed    = all_fixed && !node.free[c];
                     if (owned.is_element(g))
@@ -133,8 +134,7 @@ namespace FrictionalContact
                 if (all_fixed || !owned.is_element(first_dof))
                   continue;
                 boundaries_with_candidates.insert(face->boundary_id());
-                node.position  = face->vertex(v);
-                node.first_dof = first_dof;
+                node.position = face->vertex(v);
                 found.emplace(first_dof, node);
               }
 
@@ -232,10 +232,8 @@ namespace FrictionalContact
     Vector                            &f) const
   {
     f = 0;
-    double *entries = f.begin();
     for (unsigned int j = 0; j < nodes.size(); ++j)
-      for (unsigned int c = 0; c < dim; ++c)
-        entries[nodes[j].local_dofs[c]] = values[j][c];
+      add_nodal_value(j, values[j], f);
   }
 
 
@@ -246,13 +244,8 @@ namespace FrictionalContact
                               Vector                            &f) const
   {
     f = 0;
-    double *values = f.begin();
     for (unsigned int j = 0; j < nodes.size(); ++j)
-      {
-        const Tensor<1, dim> force = to_cartesian(j, r[j]);
-        for (unsigned int c = 0; c < dim; ++c)
-          values[nodes[j].local_dofs[c]] += force[c];
-      }
+      add_nodal_value(j, to_cartesian(j, r[j]), f);
   }
 
 

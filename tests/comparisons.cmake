@@ -112,3 +112,37 @@ contact_compare_tables(far_floor.same_as_without_contact "far_floor;no_contact"
   ${CMAKE_CURRENT_BINARY_DIR}/no_contact/output-no_contact/displacement-00001.csv
   ${CMAKE_CURRENT_BINARY_DIR}/far_floor/output-far_floor/displacement-00001.csv
   --keys x,y --columns ux,uy --tolerance 1e-10)
+
+# The semismooth Newton method against the reference solutions, against
+# Algorithm 2, and on 2 ranks.
+foreach(_scene example1_newton example2_newton)
+  set_tests_properties(${_scene} PROPERTIES FIXTURES_SETUP ${_scene})
+  set_tests_properties(${_scene}.mpirun=2 PROPERTIES FIXTURES_SETUP ${_scene}.mpirun=2)
+endforeach()
+set(_newton1 ${CMAKE_CURRENT_BINARY_DIR}/example1_newton/output-example1_newton)
+set(_newton2 ${CMAKE_CURRENT_BINARY_DIR}/example2_newton/output-example2_newton)
+set(_newton2p ${CMAKE_CURRENT_BINARY_DIR}/example2_newton.mpirun=2/output-example2_newton)
+contact_compare_tables(example1_newton.reference_contact example1_newton
+  ${_reference}/example1_NY10_contact.csv ${_newton1}/contact-00001.csv
+  --keys x --columns ux,uy,un,gap,rn,rt1 --rename un_down=un --states state)
+contact_compare_tables(example1_newton.same_as_algorithm_2 "example1_newton;example1_ny10"
+  ${_out1}/contact-00001.csv ${_newton1}/contact-00001.csv
+  --keys x --columns ux,uy,rn,rt1 --states state)
+contact_compare_tables(example2_newton.reference_contact example2_newton
+  ${_reference}/example2_NY4_contact.csv ${_newton2}/contact-00001.csv
+  --keys x,y --columns ux,uy,uz,un,gap,rn,rt1,rt2 --rename un_down=un --states state)
+contact_compare_tables(example2_newton.same_as_algorithm_2 "example2_newton;example2_ny4"
+  ${_out2}/displacement-00001.csv ${_newton2}/displacement-00001.csv
+  --keys x,y,z --columns ux,uy,uz)
+contact_compare_tables(example2_newton.one_vs_two_ranks "example2_newton;example2_newton.mpirun=2"
+  ${_newton2}/contact-00001.csv ${_newton2p}/contact-00001.csv
+  --keys x,y --columns ux,uy,uz,rn,rt1,rt2 --states state)
+
+set_tests_properties(press_and_drag_newton PROPERTIES FIXTURES_SETUP press_and_drag_newton)
+add_test(NAME press_and_drag_newton.sliding_force
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/press_and_drag_newton/output-press-and-drag-newton/statistics
+    --rows 11-16 --ratio "Tangential contact force" "Normal contact force" 0.5
+    --tolerance 1e-6)
+set_tests_properties(press_and_drag_newton.sliding_force PROPERTIES
+  FIXTURES_REQUIRED press_and_drag_newton)

@@ -115,6 +115,15 @@ namespace FrictionalContact
     Tensor<1, dim>
     to_local(const unsigned int j, Tensor<1, dim> v) const;
 
+    /// Adds the Cartesian vector @p value to the entries of node j in @p f.
+    void
+    add_nodal_value(const unsigned int j, const Tensor<1, dim> &value, Vector &f) const
+    {
+      double *entries = f.begin();
+      for (unsigned int c = 0; c < dim; ++c)
+        entries[nodes[j].local_dofs[c]] += value[c];
+    }
+
     /// f = the Cartesian nodal @p values at the candidates, zero elsewhere.
     void
     set_nodal_values(const std::vector<Tensor<1, dim>> &values, Vector &f) const;
@@ -135,7 +144,14 @@ namespace FrictionalContact
     types::global_dof_index
     first_dof(const unsigned int j) const
     {
-      return nodes[j].first_dof;
+      return nodes[j].dofs[0];
+    }
+
+    /// Global index of displacement component @p c of candidate j.
+    types::global_dof_index
+    dof(const unsigned int j, const unsigned int c) const
+    {
+      return nodes[j].dofs[c];
     }
 
     /// Signed distance from @p point to the obstacle (> 0 outside).
@@ -179,8 +195,9 @@ namespace FrictionalContact
   private:
     struct Node
     {
-      Point<dim>              position;
-      types::global_dof_index first_dof;
+      Point<dim> position;
+      /// Global indices of the displacement components.
+      std::array<types::global_dof_index, dim> dofs;
       /// Index of each displacement component in the locally owned range.
       std::array<unsigned int, dim> local_dofs;
       /// Whether the component is an unknown (not held by a fixed boundary).

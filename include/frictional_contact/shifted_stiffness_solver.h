@@ -62,6 +62,13 @@ namespace FrictionalContact
           const Vector &b,
           const double tolerance);
 
+    /// The AMG of K itself (built on first use, then kept).
+    const TrilinosWrappers::PreconditionAMG &
+    stiffness_preconditioner()
+    {
+      return amg_for(0.);
+    }
+
     /// The relative tolerance of elastic solves.
     double
     relative_tolerance() const
