@@ -214,8 +214,7 @@ namespace FrictionalContact
   std::string
   SemismoothNewtonSolver<dim>::describe() const
   {
-    return "semismooth Newton (primal-dual active set, lagged friction "
-           "bound), tolerance " +
+    return "semismooth Newton (primal-dual active set), tolerance " +
            Input::to_text(tolerance);
   }
 

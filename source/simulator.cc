@@ -504,7 +504,8 @@ namespace FrictionalContact
             << ' ' << scientific(res.complementarity) << ' '
             << scientific(res.penetration) << std::endl;
     else if (contact.active())
-      pcout << ": " << result.iterations << " primal-dual iterations, "
+      pcout << ": " << result.iterations << ' '
+            << contact_solver->iteration_name() << " iterations, "
             << result.cg_iterations << " CG iterations, " << result.amg_setups
             << " AMG set-ups; residuals " << scientific(res.force_balance)
             << ' ' << scientific(res.complementarity) << ' '
@@ -557,7 +558,7 @@ namespace FrictionalContact
     statistics.add("Free dofs d", static_cast<std::uint64_t>(body.n_free_dofs()));
     statistics.add("Contact candidates c",
                    static_cast<std::uint64_t>(contact.active() ? contact.n_candidates() : 0));
-    statistics.add("Primal-dual iterations", result.iterations);
+    statistics.add("Contact solver iterations", result.iterations);
     statistics.add("CG iterations", result.cg_iterations);
     statistics.add("AMG setups", result.amg_setups);
     statistics.add("Solve wall time (s)", result.seconds);

@@ -33,6 +33,10 @@ namespace FrictionalContact
     virtual std::string
     describe() const = 0;
 
+    /// What the method calls its iterations ("primal-dual", "Newton").
+    virtual std::string
+    iteration_name() const = 0;
+
     /// Whether the method needs mu_pi (problem.smallest_eigenvalue_K).
     virtual bool
     needs_smallest_eigenvalue() const

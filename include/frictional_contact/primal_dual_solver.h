@@ -30,6 +30,12 @@ namespace FrictionalContact
     std::string
     describe() const override;
 
+    std::string
+    iteration_name() const override
+    {
+      return "primal-dual";
+    }
+
     bool
     needs_smallest_eigenvalue() const override
     {

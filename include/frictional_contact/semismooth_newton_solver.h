@@ -36,6 +36,12 @@ namespace FrictionalContact
     std::string
     describe() const override;
 
+    std::string
+    iteration_name() const override
+    {
+      return "Newton";
+    }
+
     SolveStatistics
     solve(const IncrementalProblem<dim> &problem,
           ShiftedStiffnessSolver        &linear_solver,
