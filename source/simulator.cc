@@ -292,6 +292,17 @@ namespace FrictionalContact
     for (unsigned int l = first_increment; l < loading.increment_times().size(); ++l)
       solve_increment(l);
     timer.print_wall_time_statistics(mpi_communicator);
+
+    // One line for scripts (bench/): seconds per section, peak memory.
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    pcout << "-- summary:";
+    for (const auto &[section, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      pcout << ' ' << section << " = " << Utilities::MPI::max(seconds, mpi_communicator) << " s;";
+    pcout << " peak memory = "
+          << Utilities::MPI::max(memory.VmHWM, mpi_communicator) / 1024.
+          << " MB per rank (largest)" << std::endl;
   }
 
 
