@@ -62,11 +62,11 @@ end
     return text
 
 
-def run(text, ranks, folder):
+def run(text, ranks, folder, contact):
     path = os.path.join(folder, "scene.prm")
     with open(path, "w") as f:
         f.write(text)
-    command = [os.path.join(os.path.dirname(__file__), "..", "build", "contact"), path]
+    command = [contact, path]
     if ranks > 1:
         command = ["mpirun", "-np", str(ranks)] + command
     environment = dict(os.environ, OMP_NUM_THREADS="1",
@@ -121,6 +121,9 @@ def main():
     parser.add_argument("--max-n-y", type=int, default=1000,
                         help="skip larger instances")
     parser.add_argument("--csv", default="doc/benchmarks/series.csv")
+    parser.add_argument("--contact", default=os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "build", "contact"),
+                        help="the program to measure")
     args = parser.parse_args()
 
     instances = []
@@ -154,11 +157,11 @@ def main():
             with tempfile.TemporaryDirectory() as folder:
                 if (example, n_y) not in elastic:
                     code, output, _ = run(scene(example, n_y, mu, None, False),
-                                          args.ranks, folder)
+                                          args.ranks, folder, args.contact)
                     match = re.search(r"Elastic solve = ([0-9.e+-]+) s", output)
                     elastic[(example, n_y)] = float(match.group(1)) if match else ""
                 code, output, total = run(scene(example, n_y, mu, SOLVERS[solver]),
-                                          args.ranks, folder)
+                                          args.ranks, folder, args.contact)
             row = dict(example=example, N_Y=n_y, mu=mu, ranks=args.ranks,
                        solver=solver, total_s=round(total, 3),
                        converged=int(code == 0), elastic_solve_s=elastic[(example, n_y)])

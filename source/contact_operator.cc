@@ -251,6 +251,27 @@ namespace FrictionalContact
 
 
   template <int dim>
+  std::vector<double>
+  ContactOperator<dim>::normal_stiffness(
+    const TrilinosWrappers::SparseMatrix &K) const
+  {
+    std::vector<double> c(nodes.size(), 0.);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        Tensor<1, dim> normal;
+        normal[0]                = 1;
+        const Tensor<1, dim> t_n = to_cartesian(j, normal);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            if (t_n[a] != 0 && t_n[b] != 0)
+              c[j] += t_n[a] * K.el(nodes[j].dofs[a], nodes[j].dofs[b]) * t_n[b];
+      }
+    return c;
+  }
+
+
+
+  template <int dim>
   double
   ContactOperator<dim>::largest_singular_value() const
   {

@@ -12,16 +12,29 @@ namespace FrictionalContact
   void
   PrimalDualSolver<dim>::declare_parameters(ParameterHandler &prm)
   {
+    prm.declare_entry("Scaling",
+                      "problem",
+                      Patterns::Selection("problem|paper"),
+                      "paper: Initial alpha and Tolerance are absolute, in "
+                      "the units of the problem, as published (alpha_0 = 0.1 "
+                      "and |du_{k+1} - du_k| <= 1e-12 for E = 1); the method "
+                      "then depends on the units. problem: they are "
+                      "dimensionless: alpha_0 = Initial alpha times the mean "
+                      "normal stiffness of the contact nodes (t_n^T K t_n), "
+                      "and the iteration stops when max |du_{k+1} - du_k| <= "
+                      "Tolerance times the increment's length scale (largest "
+                      "gap or displacement); the iterations then do not "
+                      "depend on the units.");
     prm.declare_entry("Initial alpha",
                       "0.1",
                       Patterns::Double(0.),
-                      "The dual step length alpha_0 of Algorithm 2 (> 0); "
-                      "beta_0 = 1 / (alpha_0 sigma_T^2). The paper uses 0.1.");
+                      "The dual step length alpha_0 of Algorithm 2 (> 0; see "
+                      "Scaling); beta_0 = 1 / (alpha_0 sigma_T^2).");
     prm.declare_entry("Tolerance",
                       "1e-12",
                       Patterns::Double(0.),
-                      "Stop when |du_{k+1} - du_k| <= this (length), as the "
-                      "paper (1e-12).");
+                      "Stop when the step |du_{k+1} - du_k| is below this "
+                      "(see Scaling).");
     prm.declare_entry("Maximum iterations",
                       "100000",
                       Patterns::Integer(1),
@@ -49,6 +62,7 @@ namespace FrictionalContact
   PrimalDualSolver<dim>::parse_parameters(ParameterHandler &prm)
   {
     initial_alpha  = prm.get_double("Initial alpha");
+    paper_scaling  = prm.get("Scaling") == "paper";
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     step_tolerance = prm.get_double("Primal step tolerance");
@@ -64,9 +78,16 @@ namespace FrictionalContact
   std::string
   PrimalDualSolver<dim>::describe() const
   {
-    return "accelerated primal-dual (Kanno, Algorithm 2), alpha_0 = " +
-           Input::to_text(initial_alpha) + ", stop at |du_k+1 - du_k| <= " +
-           Input::to_text(tolerance);
+    if (paper_scaling)
+      return "accelerated primal-dual (Kanno, Algorithm 2), as published: "
+             "alpha_0 = " +
+             Input::to_text(initial_alpha) + ", stop at |du_k+1 - du_k| <= " +
+             Input::to_text(tolerance);
+    return "accelerated primal-dual (Kanno, Algorithm 2), scaled: alpha_0 = " +
+           Input::to_text(initial_alpha) +
+           " k (k: normal stiffness of the contact nodes), stop at "
+           "max |du_k+1 - du_k| <= " +
+           Input::to_text(tolerance) + " L";
   }
 
 
@@ -90,8 +111,21 @@ namespace FrictionalContact
     Vector du_hat(du), step(du), K_du(du), T_r(du), rhs(du), scratch(du);
     problem.stiffness.vmult(K_du, du);
 
-    double alpha = initial_alpha;
-    double beta  = 1. / (initial_alpha * std::pow(problem.largest_singular_value_T, 2));
+    // The step lengths and the stopping test, in the units of the problem
+    // or (Scaling = problem) from its own scales.
+    double alpha     = initial_alpha;
+    double step_goal = tolerance;
+    if (!paper_scaling)
+      {
+        double stiffness = 0;
+        for (const double c_j : contact.normal_stiffness(problem.stiffness))
+          stiffness += c_j;
+        stiffness = Utilities::MPI::sum(stiffness, du.get_mpi_communicator()) /
+                    std::max<double>(1, contact.n_candidates());
+        alpha *= stiffness;
+        step_goal *= problem.length_scale;
+      }
+    double beta = 1. / (alpha * std::pow(problem.largest_singular_value_T, 2));
 
     SolveStatistics result;
     for (unsigned int k = 0; k < max_iterations; ++k)
@@ -131,7 +165,7 @@ namespace FrictionalContact
 
         problem.stiffness.vmult(K_du, du);
         result.iterations = k + 1;
-        result.last_step  = step.l2_norm();
+        result.last_step  = paper_scaling ? step.l2_norm() : step.linfty_norm();
         result.residuals =
           compute_residuals(problem, du, K_du, T_r, r, scratch);
 
@@ -151,7 +185,7 @@ namespace FrictionalContact
                              " (the iteration diverged)";
             break;
           }
-        if (result.last_step <= tolerance)
+        if (result.last_step <= step_goal)
           {
             result.converged = true;
             break;
@@ -161,7 +195,7 @@ namespace FrictionalContact
       result.failure = "no convergence in " + std::to_string(max_iterations) +
                        " iterations (last |du_k+1 - du_k| = " +
                        Input::to_text(result.last_step) + ", tolerance " +
-                       Input::to_text(tolerance) +
+                       Input::to_text(step_goal) +
                        "); raise <Contact solver/Accelerated primal-dual/"
                        "Maximum iterations>";
     result.amg_setups = linear_solver.n_amg_setups - amg_setups_before;

@@ -237,18 +237,7 @@ namespace FrictionalContact
     const unsigned int setups   = linear_solver.n_amg_setups;
     const auto        &amg      = linear_solver.stiffness_preconditioner();
 
-    // c_j = t_n,j^T K_jj t_n,j: the normal stiffness of node j.
-    std::vector<double> c(n, 0.);
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        Tensor<1, dim> normal;
-        normal[0]                = 1;
-        const Tensor<1, dim> t_n = contact.to_cartesian(j, normal);
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            if (t_n[a] != 0 && t_n[b] != 0)
-              c[j] += t_n[a] * K.el(contact.dof(j, a), contact.dof(j, b)) * t_n[b];
-      }
+    const std::vector<double> c = contact.normal_stiffness(K);
 
     std::vector<NodeCondition>  conditions(n, NodeCondition::none);
     std::vector<double>         bound(n, 0.);
@@ -268,10 +257,6 @@ namespace FrictionalContact
     bool friction = mu > 0 && Utilities::MPI::max(r_norm, comm) > 0;
 
     const double load_norm = problem.load.l2_norm();
-    double       gap_scale = 0;
-    for (unsigned int j = 0; j < n; ++j)
-      gap_scale = std::max(gap_scale, std::abs(problem.gaps[j]));
-    gap_scale = Utilities::MPI::max(gap_scale, comm);
 
     Vector K_du(du), rhs(du), w(du), T_r(du), scratch(du), previous_du(du);
     // The force balance residual K du - p - T r of the previous iterate.
@@ -294,7 +279,7 @@ namespace FrictionalContact
         if (!first)
           {
             const double length =
-              std::max(gap_scale, du.linfty_norm());
+              std::max(problem.length_scale, du.linfty_norm());
             const Residuals &res = result.residuals;
             if (res.force_balance <= tolerance * load_norm &&
                 res.penetration <= tolerance * length &&

@@ -105,7 +105,7 @@ namespace FrictionalContact
     prm.enter_subsection("Contact solver");
     PluginRegistry<ContactSolver<dim>>::declare_parameters(
       prm,
-      "accelerated primal-dual",
+      "semismooth Newton",
       "The method that solves each incremental contact problem.",
       "Method");
     prm.declare_entry("Report every",
@@ -397,7 +397,18 @@ namespace FrictionalContact
     if (contact.active())
       {
         IncrementalProblem<dim>     problem = incremental_problem(l, load);
-        std::vector<Tensor<1, dim>>   r(contact.n_local());
+        std::vector<Tensor<1, dim>> r(contact.n_local());
+        // A length for tolerances that follow the units: the largest gap,
+        // displacement so far, or elastic displacement of this increment.
+        double largest_gap = 0;
+        for (const double g : problem.gaps)
+          largest_gap = std::max(largest_gap, std::abs(g));
+        problem.length_scale =
+          std::max({Utilities::MPI::max(largest_gap, mpi_communicator),
+                    u.linfty_norm(),
+                    try_elastic_first ? du.linfty_norm() : 0.});
+        if (!(problem.length_scale > 0))
+          problem.length_scale = 1;
         if (try_elastic_first && separates(problem, du))
           {
             TrilinosWrappers::MPI::Vector K_du = body.make_vector();

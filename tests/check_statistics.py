@@ -3,8 +3,11 @@
 
 usage: check_statistics.py statistics --rows FIRST-LAST
            --ratio "numerator column" "denominator column" VALUE [--tolerance 1e-6]
+       check_statistics.py statistics --rows FIRST-LAST
+           --same-as OTHER_STATISTICS "column" [--tolerance 0.1]
 Passes if numerator / denominator = VALUE within the relative tolerance on
-every row of the range (rows counted from 1, as the increments).
+every row of the range (rows counted from 1, as the increments); or if the
+column equals that of the other file within the relative tolerance.
 """
 import argparse
 import re
@@ -27,12 +30,27 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("statistics")
     parser.add_argument("--rows", required=True)
-    parser.add_argument("--ratio", nargs=3, required=True)
+    parser.add_argument("--ratio", nargs=3)
+    parser.add_argument("--same-as", nargs=2)
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
 
     columns, rows = read_statistics(args.statistics)
     first, last = (int(x) for x in args.rows.split("-"))
+    if args.same_as:
+        other_columns, other_rows = read_statistics(args.same_as[0])
+        column = args.same_as[1]
+        ok = len(rows) >= last and len(other_rows) >= last
+        for row, other in zip(rows[first - 1:last], other_rows[first - 1:last]):
+            a, b = float(row[columns[column]]), float(other[other_columns[column]])
+            error = abs(a - b) / max(abs(b), 1e-300)
+            passed = error <= args.tolerance
+            ok = ok and passed
+            print(f"increment {row[0]}: {column} {a:g} against {b:g} "
+                  f"(relative difference {error:.1e}, {'ok' if passed else 'ABOVE'} "
+                  f"{args.tolerance:g})")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
     numerator, denominator, value = args.ratio
     ok = len(rows) >= last
     for row in rows[first - 1:last]:

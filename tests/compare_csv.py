@@ -47,6 +47,10 @@ def main():
     parser.add_argument("--rename", nargs="*", default=[],
                         help="column renames for the first file, old=new")
     parser.add_argument("--tolerance", type=float, default=1e-8)
+    parser.add_argument("--scale-b", type=float, default=1.0,
+                        help="multiply the compared columns of B by this")
+    parser.add_argument("--key-scale-b", type=float, default=1.0,
+                        help="multiply the key columns of B by this")
     parser.add_argument("--states", default=None,
                         help="a column of contact states to compare exactly")
     args = parser.parse_args()
@@ -57,10 +61,10 @@ def main():
     a_rows, b_rows = read(args.a, rename), read(args.b, {})
     keys = args.keys.split(",")
 
-    def key(row):
-        return tuple(round(float(row[k]), 9) for k in keys)
+    def key(row, scale=1.0):
+        return tuple(round(scale * float(row[k]), 9) for k in keys)
 
-    b_by_key = {key(row): row for row in b_rows}
+    b_by_key = {key(row, args.key_scale_b): row for row in b_rows}
     if len(a_rows) != len(b_rows) or set(map(key, a_rows)) != set(b_by_key):
         print(f"FAILED: the tables hold different nodes "
               f"({len(a_rows)} rows in {args.a}, {len(b_rows)} in {args.b})")
@@ -69,7 +73,8 @@ def main():
     ok = True
     for column in args.columns.split(","):
         scale = max(abs(float(row[column])) for row in a_rows) or 1.0
-        error = max(abs(float(row[column]) - float(b_by_key[key(row)][column]))
+        error = max(abs(float(row[column]) -
+                        args.scale_b * float(b_by_key[key(row)][column]))
                     for row in a_rows) / scale
         passed = error <= args.tolerance
         ok = ok and passed

@@ -138,11 +138,31 @@ contact_compare_tables(example2_newton.one_vs_two_ranks "example2_newton;example
   ${_newton2}/contact-00001.csv ${_newton2p}/contact-00001.csv
   --keys x,y --columns ux,uy,uz,rn,rt1,rt2 --states state)
 
-set_tests_properties(press_and_drag_newton PROPERTIES FIXTURES_SETUP press_and_drag_newton)
-add_test(NAME press_and_drag_newton.sliding_force
+set_tests_properties(press_and_drag_primal_dual PROPERTIES FIXTURES_SETUP press_and_drag_primal_dual)
+add_test(NAME press_and_drag_primal_dual.sliding_force
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
-    ${CMAKE_CURRENT_BINARY_DIR}/press_and_drag_newton/output-press-and-drag-newton/statistics
+    ${CMAKE_CURRENT_BINARY_DIR}/press_and_drag_primal_dual/output-press-and-drag-primal-dual/statistics
     --rows 11-16 --ratio "Tangential contact force" "Normal contact force" 0.5
     --tolerance 1e-6)
-set_tests_properties(press_and_drag_newton.sliding_force PROPERTIES
-  FIXTURES_REQUIRED press_and_drag_newton)
+set_tests_properties(press_and_drag_primal_dual.sliding_force PROPERTIES
+  FIXTURES_REQUIRED press_and_drag_primal_dual)
+
+# Unit invariance: the same problem in E = 1 units and in SI units with
+# lengths 1e-3 times smaller and E = 2.1e11: the same iterations (within
+# 10 percent), and the displacements scale by 1e-3 (to 1e-8).
+foreach(_method newton primal_dual)
+  set(_a units_${_method}_reference)
+  set(_b units_${_method}_si)
+  set_tests_properties(${_a} PROPERTIES FIXTURES_SETUP ${_a})
+  set_tests_properties(${_b} PROPERTIES FIXTURES_SETUP ${_b})
+  contact_compare_tables(${_b}.scaled_solution "${_a};${_b}"
+    ${CMAKE_CURRENT_BINARY_DIR}/${_a}/output-${_a}/displacement-00001.csv
+    ${CMAKE_CURRENT_BINARY_DIR}/${_b}/output-${_b}/displacement-00001.csv
+    --keys x,y --columns ux,uy --scale-b 1e3 --key-scale-b 1e3 --tolerance 1e-8)
+  add_test(NAME ${_b}.same_iterations
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_b}/output-${_b}/statistics --rows 1-1
+      --same-as ${CMAKE_CURRENT_BINARY_DIR}/${_a}/output-${_a}/statistics
+      "Contact solver iterations" --tolerance 0.1)
+  set_tests_properties(${_b}.same_iterations PROPERTIES FIXTURES_REQUIRED "${_a};${_b}")
+endforeach()

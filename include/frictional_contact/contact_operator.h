@@ -132,6 +132,12 @@ namespace FrictionalContact
     void
     apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const;
 
+    /// c_j = t_n,j^T K_jj t_n,j for each local candidate: the stiffness of
+    /// node j in the normal direction (force/length), a scale of K that
+    /// follows the units of the problem.
+    std::vector<double>
+    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const;
+
     /// The largest singular value of T, computed from the nodal blocks.
     double
     largest_singular_value() const;

@@ -23,6 +23,9 @@ namespace FrictionalContact
     /// p = p^{l+1} - K u^l (zero at fixed dofs).
     const TrilinosWrappers::MPI::Vector &load;
     const ContactOperator<dim>          &contact;
+    /// A length of the increment (largest gap, displacement or elastic
+    /// displacement increment) for tolerances that follow the units.
+    double length_scale = 1;
     /// The paper's sigma_T and mu_pi.
     double largest_singular_value_T = 1;
     double smallest_eigenvalue_K    = 0;
