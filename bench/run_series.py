@@ -32,33 +32,61 @@ COLUMNS = ["example", "N_Y", "mu", "ranks", "solver", "d", "c", "iterations",
 
 
 def scene(example, n_y, mu, solver, contact=True):
-    """A parameter file for the instance, built on the shipped scenes."""
-    top = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+    """A complete parameter file for the instance: Kanno's example I (2D,
+    body 1 x 0.4, N_X = 2.5 N_Y) or II (3D, 2 x 1 x 1, N_X = 2 N_Y = 2 N_Z),
+    written out in full so that it does not depend on parameters/."""
     if example == 1:
-        boxes = f"set X repetitions = {n_y * 5 // 2}\n set Y repetitions = {n_y}\n"
-    else:
-        boxes = (f"set X repetitions = {2 * n_y}\n set Y repetitions = {n_y}\n"
-                 f" set Z repetitions = {n_y}\n")
-    text = f"""include {top}/parameters/example{example}.prm
-set Output directory = output
-subsection Geometry
+        text = f"""subsection Geometry
  subsection Box
- {boxes} end
+  set Y extent = 0.4
+  set X repetitions = {n_y * 5 // 2}
+  set Y repetitions = {n_y}
+ end
 end
-subsection Output
- set Write vtu = false
+subsection Material
+ set Two-dimensional model = plane stress
+end
+subsection Boundary conditions
+ set Fixed boundaries = left
+ set Traction = top: 0, -0.01
 end
 """
-    if contact:
-        text += f"""subsection Contact
+        floor = "0, -0.01"
+    else:
+        text = f"""set Dimension = 3
+subsection Geometry
+ subsection Box
+  set X extent = 2
+  set X repetitions = {2 * n_y}
+  set Y repetitions = {n_y}
+  set Z repetitions = {n_y}
+ end
+end
+subsection Boundary conditions
+ set Fixed boundaries = left
+ set Traction = top: 0, 0, -0.005
+end
+"""
+        floor = "0, 0, -0.005"
+    text += "set Output directory = output\nsubsection Output\n set Write vtu = false\nend\n"
+    if not contact:
+        return text
+    text += f"""subsection Contact
+ set Contact boundaries = bottom
  set Friction coefficient = {mu}
+ subsection Obstacle
+  subsection Plane
+   set Point = {floor}
+  end
+ end
 end
 subsection Contact solver
  set Method = {solver}
+ subsection Accelerated primal-dual
+  set Scaling = paper
+ end
 end
 """
-    else:
-        text += "subsection Contact\n set Contact boundaries =\nend\n"
     return text
 
 
