@@ -5,6 +5,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <frictional_contact/elastic_body.h>
@@ -42,6 +43,28 @@ namespace FrictionalContact
                                                Functions::ZeroFunction<dim>(dim),
                                                constraints,
                                                fixed.components);
+    // The increments of prescribed displacements are set by a lifting
+    // (prescribed_increment()); for the solves these dofs are held too.
+    prescribed_dofs.clear();
+    prescribed_dofs.set_size(dof_handler.n_dofs());
+    for (const auto &prescribed : conditions.prescribed_boundaries)
+      {
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 prescribed.id,
+                                                 Functions::ZeroFunction<dim>(dim),
+                                                 values,
+                                                 prescribed.components);
+        for (const auto &[dof, value] : values)
+          if (!constraints.is_constrained(dof) && owned_dofs.is_element(dof))
+            prescribed_dofs.add_index(dof);
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 prescribed.id,
+                                                 Functions::ZeroFunction<dim>(dim),
+                                                 constraints,
+                                                 prescribed.components);
+      }
+    prescribed_dofs.compress();
     constraints.close();
 
     for (unsigned int c = 0; c < dim; ++c)
@@ -165,6 +188,48 @@ namespace FrictionalContact
 
 
   template <int dim>
+  void
+  ElasticBody<dim>::internal_force(const Vector &u, Vector &force) const
+  {
+    if (conditions.prescribed_boundaries.empty())
+      {
+        // u is zero on all constrained dofs: the condensed K does it.
+        stiffness.vmult(force, u);
+        return;
+      }
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    FEFaceValues<dim>     fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_JxW_values);
+    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
+    dealii::Vector<double> cell_load(dofs_per_cell), cell_u(dofs_per_cell),
+      cell_force(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+    Vector u_ghosted = make_ghosted_vector();
+    u_ghosted        = u;
+    force            = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
+          cell->get_dof_values(u_ghosted, cell_u);
+          cell_matrix.vmult(cell_force, cell_u);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_force, dof_indices, force);
+        }
+    force.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   ElasticBody<dim>::support_reaction(const Vector &u,
                                      const double  load_factor) const
@@ -206,6 +271,53 @@ namespace FrictionalContact
         if (is_fixed(g))
           reaction_here[c] += residual[g];
     return Utilities::MPI::sum(reaction_here, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::prescribed_increment(const double t_old,
+                                         const double t_new,
+                                         Vector      &increment) const
+  {
+    increment = 0;
+    FunctionParser<dim> &u_D = *conditions.prescribed_displacement;
+    /// u_D(x, t_new) - u_D(x, t_old).
+    class Difference : public Function<dim>
+    {
+    public:
+      Difference(FunctionParser<dim> &u, const double t_old, const double t_new)
+        : Function<dim>(dim)
+        , u(u)
+        , t_old(t_old)
+        , t_new(t_new)
+      {}
+
+      double
+      value(const Point<dim> &p, const unsigned int c) const override
+      {
+        u.set_time(t_new);
+        const double after = u.value(p, c);
+        u.set_time(t_old);
+        return after - u.value(p, c);
+      }
+
+    private:
+      FunctionParser<dim> &u;
+      const double         t_old, t_new;
+    } difference(u_D, t_old, t_new);
+
+    for (const auto &prescribed : conditions.prescribed_boundaries)
+      {
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(
+          dof_handler, prescribed.id, difference, values, prescribed.components);
+        for (const auto &[dof, value] : values)
+          if (prescribed_dofs.is_element(dof))
+            increment[dof] = value;
+      }
+    increment.compress(VectorOperation::insert);
   }
 
 

@@ -334,7 +334,8 @@ namespace FrictionalContact
   IncrementalProblem<dim>
   Simulator<dim>::incremental_problem(
     const unsigned int                   l,
-    const TrilinosWrappers::MPI::Vector &load) const
+    const TrilinosWrappers::MPI::Vector &load,
+    const TrilinosWrappers::MPI::Vector &start) const
   {
     IncrementalProblem<dim> problem{body.stiffness_matrix(), load, contact};
     problem.largest_singular_value_T = sigma_T;
@@ -344,9 +345,10 @@ namespace FrictionalContact
       contact.obstacle_displacement(t) - contact.obstacle_displacement(t_prev);
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
-        // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l.
+        // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l
+        // (with the prescribed part of the increment).
         problem.gaps.push_back(contact.reference_gap(j) -
-                               contact.local_part(j, u)[0]);
+                               contact.local_part(j, start)[0]);
         Tensor<1, dim> slip = contact.to_local(j, motion);
         slip[0]             = 0;
         problem.obstacle_slip.push_back(slip);
@@ -376,9 +378,17 @@ namespace FrictionalContact
     const double t = loading.increment_times()[l];
     contact.move_obstacle(contact.obstacle_displacement(t));
 
-    // p = p^{l+1} - K u^l.
+    // The increment of the prescribed displacements, and the configuration
+    // it leads to before the rest of the increment is solved for.
+    const double t_prev = l > 0 ? loading.increment_times()[l - 1] : 0.;
+    TrilinosWrappers::MPI::Vector lifting = body.make_vector();
+    body.prescribed_increment(t_prev, t, lifting);
+    TrilinosWrappers::MPI::Vector start = u;
+    start += lifting;
+
+    // p = p^{l+1} - K (u^l + the prescribed increment).
     TrilinosWrappers::MPI::Vector load = body.make_vector();
-    body.stiffness_matrix().vmult(load, u);
+    body.internal_force(start, load);
     load.sadd(-1., loading.load_factor(t), body.load_vector());
 
     TrilinosWrappers::MPI::Vector du = body.make_vector();
@@ -396,7 +406,7 @@ namespace FrictionalContact
       }
     if (contact.active())
       {
-        IncrementalProblem<dim>     problem = incremental_problem(l, load);
+        IncrementalProblem<dim>     problem = incremental_problem(l, load, start);
         std::vector<Tensor<1, dim>> r(contact.n_local());
         // A length for tolerances that follow the units: the largest gap,
         // displacement so far, or elastic displacement of this increment.
@@ -405,7 +415,7 @@ namespace FrictionalContact
           largest_gap = std::max(largest_gap, std::abs(g));
         problem.length_scale =
           std::max({Utilities::MPI::max(largest_gap, mpi_communicator),
-                    u.linfty_norm(),
+                    start.linfty_norm(),
                     try_elastic_first ? du.linfty_norm() : 0.});
         if (!(problem.length_scale > 0))
           problem.length_scale = 1;
@@ -459,6 +469,7 @@ namespace FrictionalContact
         result.converged  = true;
       }
     body.get_constraints().distribute(du);
+    du += lifting;
     u += du;
     report_increment(l, du, results, result);
     return result;

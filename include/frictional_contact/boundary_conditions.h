@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/fe/component_mask.h>
@@ -14,7 +15,8 @@ namespace FrictionalContact
   /**
    * Supports and loads of the elastic body, as read from the subsection
    * "Boundary conditions": boundaries with zero displacement (all or some
-   * components), surface tractions per boundary and a body force.
+   * components), boundaries with a prescribed displacement (a function of
+   * position and time), surface tractions per boundary and a body force.
    */
   template <int dim>
   class BoundaryConditions
@@ -28,11 +30,14 @@ namespace FrictionalContact
     struct FixedBoundary
     {
       types::boundary_id id;
-      /// The displacement components held at zero.
+      /// The displacement components held (at zero, or prescribed).
       ComponentMask components;
     };
 
     std::vector<FixedBoundary>                    fixed_boundaries;
+    std::vector<FixedBoundary>                    prescribed_boundaries;
+    /// u(x, t) on the prescribed boundaries.
+    std::unique_ptr<FunctionParser<dim>>          prescribed_displacement;
     std::map<types::boundary_id, Tensor<1, dim>> tractions;
     Tensor<1, dim>                                body_force;
   };

@@ -48,6 +48,15 @@ namespace FrictionalContact
     check_rigid_body_motion_is_prevented() const;
 
     /**
+     * The internal force K u at the unconstrained dofs (zero at the
+     * others), for a displacement @p u that may be non-zero on prescribed
+     * boundaries: the condensed stiffness matrix alone would miss their
+     * coupling to the free dofs.
+     */
+    void
+    internal_force(const Vector &u, Vector &force) const;
+
+    /**
      * The sum of the support reactions (forces the supports exert on the
      * body) for the displacement @p u (with ghost entries) under the load
      * factor @p load_factor: the unconstrained residual K u - p at the
@@ -55,6 +64,16 @@ namespace FrictionalContact
      */
     Tensor<1, dim>
     support_reaction(const Vector &u, const double load_factor) const;
+
+    /**
+     * The increment of the prescribed displacements from time @p t_old to
+     * @p t_new, at the prescribed dofs, zero elsewhere (the lifting of an
+     * increment; the solves then work with homogeneous constraints).
+     */
+    void
+    prescribed_increment(const double t_old,
+                         const double t_new,
+                         Vector      &increment) const;
 
     /// The total applied force (tractions and body force) for load factor 1.
     const Tensor<1, dim> &
@@ -154,6 +173,8 @@ namespace FrictionalContact
     std::array<IndexSet, dim> component_dofs;
 
     AffineConstraints<double>      constraints;
+    /// Locally owned dofs of prescribed (not fixed) boundaries.
+    IndexSet                       prescribed_dofs;
     TrilinosWrappers::SparseMatrix stiffness;
     Vector                         load;
     Tensor<1, dim>                 reference_total_load;

@@ -70,10 +70,12 @@ namespace FrictionalContact
     separates(const IncrementalProblem<dim>       &problem,
               const TrilinosWrappers::MPI::Vector &du) const;
 
-    /// The contact problem of increment @p l, for the load vector @p load.
+    /// The contact problem of increment @p l, for the load vector @p load,
+    /// from the displacement @p start (u^l and the prescribed increment).
     IncrementalProblem<dim>
     incremental_problem(const unsigned int                   l,
-                        const TrilinosWrappers::MPI::Vector &load) const;
+                        const TrilinosWrappers::MPI::Vector &load,
+                        const TrilinosWrappers::MPI::Vector &start) const;
 
     /// Writes a checkpoint after increment @p l.
     void
