@@ -31,6 +31,9 @@ def main():
     parser.add_argument("statistics")
     parser.add_argument("--rows", required=True)
     parser.add_argument("--ratio", nargs=3)
+    parser.add_argument("--ratio-between", nargs=4,
+                        metavar=("NUMERATOR", "DENOMINATOR", "LOW", "HIGH"),
+                        help="numerator / denominator in [LOW, HIGH)")
     parser.add_argument("--same-as", nargs=2)
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
@@ -49,6 +52,17 @@ def main():
             print(f"increment {row[0]}: {column} {a:g} against {b:g} "
                   f"(relative difference {error:.1e}, {'ok' if passed else 'ABOVE'} "
                   f"{args.tolerance:g})")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
+    if args.ratio_between:
+        numerator, denominator, low, high = args.ratio_between
+        ok = len(rows) >= last
+        for row in rows[first - 1:last]:
+            ratio = float(row[columns[numerator]]) / float(row[columns[denominator]])
+            passed = float(low) <= ratio < float(high)
+            ok = ok and passed
+            print(f"increment {row[0]}: {numerator} / {denominator} = {ratio:.10f} "
+                  f"({'in' if passed else 'NOT in'} [{low}, {high}))")
         print("PASSED" if ok else "FAILED")
         return 0 if ok else 1
     numerator, denominator, value = args.ratio

@@ -166,3 +166,19 @@ foreach(_method newton primal_dual)
       "Contact solver iterations" --tolerance 0.1)
   set_tests_properties(${_b}.same_iterations PROPERTIES FIXTURES_REQUIRED "${_a};${_b}")
 endforeach()
+
+# Extreme cases with a check beyond convergence.
+set_tests_properties(extreme_edge_of_sliding_newton PROPERTIES
+  FIXTURES_SETUP extreme_edge_of_sliding_newton)
+add_test(NAME extreme_edge_of_sliding_newton.ratio
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/extreme_edge_of_sliding_newton/output-extreme_edge_of_sliding_newton/statistics
+    --rows 2-2 --ratio-between "Tangential contact force" "Normal contact force" 0.4995 0.5)
+set_tests_properties(extreme_edge_of_sliding_newton.ratio PROPERTIES
+  FIXTURES_REQUIRED extreme_edge_of_sliding_newton)
+set_tests_properties(extreme_stiff_newton PROPERTIES FIXTURES_SETUP extreme_stiff_newton)
+contact_compare_tables(extreme_stiff_newton.same_displacement
+  "extreme_stiff_newton;units_newton_reference"
+  ${CMAKE_CURRENT_BINARY_DIR}/units_newton_reference/output-units_newton_reference/displacement-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/extreme_stiff_newton/output-extreme_stiff_newton/displacement-00001.csv
+  --keys x,y --columns ux,uy --tolerance 1e-8)
