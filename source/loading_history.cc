@@ -71,6 +71,17 @@ namespace FrictionalContact
                       "If not empty: lambda(t) as a piecewise-linear table "
                       "'t_0: lambda_0; t_1: lambda_1; ...' with increasing "
                       "times, constant beyond its ends; replaces Load factor.");
+    prm.declare_entry("On failure",
+                      "abort",
+                      Patterns::Selection("abort|cut increment"),
+                      "What a failed increment does (no convergence, "
+                      "divergence, stagnation): abort the run, with the "
+                      "residuals, keeping the finished increments; or retry "
+                      "it as two halves, up to Maximum cuts times in a row.");
+    prm.declare_entry("Maximum cuts",
+                      "5",
+                      Patterns::Integer(0, 30),
+                      "How often in a row an increment may be cut in half.");
     prm.leave_subsection();
   }
 

@@ -40,6 +40,13 @@ namespace FrictionalContact
                       Patterns::Integer(1),
                       "Primal-dual iterations allowed per increment. A solve "
                       "that needs more fails with its residuals.");
+    prm.declare_entry("Stagnation window",
+                      "10000",
+                      Patterns::Integer(1),
+                      "Stop with a failure when the step |du_k+1 - du_k| has "
+                      "not become 1 percent smaller than its best value for "
+                      "this many iterations, or when it grows to 1e8 times "
+                      "its best value (divergence).");
     prm.declare_entry("Primal step tolerance",
                       "1e-6",
                       Patterns::Double(0., 1.),
@@ -66,6 +73,7 @@ namespace FrictionalContact
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     step_tolerance = prm.get_double("Primal step tolerance");
+    stagnation_window = prm.get_integer("Stagnation window");
     if (!(initial_alpha > 0))
       Input::fail("Contact solver/Accelerated primal-dual/Initial alpha",
                   Input::to_text(initial_alpha),
@@ -128,6 +136,8 @@ namespace FrictionalContact
     double beta = 1. / (alpha * std::pow(problem.largest_singular_value_T, 2));
 
     SolveStatistics result;
+    double          best_step     = std::numeric_limits<double>::max();
+    unsigned int    last_progress = 0;
     for (unsigned int k = 0; k < max_iterations; ++k)
       {
         // Dual step (lines 4-7): modified gap, then projection onto F.
@@ -182,7 +192,34 @@ namespace FrictionalContact
           {
             result.failure = "NaN or infinity at iteration " +
                              std::to_string(k + 1) +
-                             " (the iteration diverged)";
+                             " (the iteration diverged); try smaller "
+                             "increments or Method = semismooth Newton";
+            break;
+          }
+        if (result.last_step < 0.99 * best_step)
+          {
+            best_step      = result.last_step;
+            last_progress = k;
+          }
+        if (result.last_step > 1e8 * best_step)
+          {
+            result.failure = "divergence at iteration " + std::to_string(k + 1) +
+                             ": the step grew to " +
+                             Input::to_text(result.last_step) + " from " +
+                             Input::to_text(best_step) +
+                             "; try smaller increments or Method = semismooth "
+                             "Newton";
+            break;
+          }
+        if (k - last_progress > stagnation_window)
+          {
+            result.failure = "no progress from iteration " +
+                             std::to_string(last_progress + 1) + " to " +
+                             std::to_string(k + 1) + " (step " +
+                             Input::to_text(result.last_step) + ", best " +
+                             Input::to_text(best_step) +
+                             "); try Method = semismooth Newton or smaller "
+                             "increments";
             break;
           }
         if (result.last_step <= step_goal)

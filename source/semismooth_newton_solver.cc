@@ -192,8 +192,9 @@ namespace FrictionalContact
     prm.declare_entry("Linear reduction",
                       "1e-2",
                       Patterns::Double(0., 1.),
-                      "CG reduces the residual of each Newton step by this "
-                      "factor (the last steps go down to the tolerance).");
+                      "CG (or GMRES) reduces the residual of each Newton step "
+                      "by this factor, ten times more after a step the line "
+                      "search had to shorten.");
   }
 
 
@@ -271,7 +272,10 @@ namespace FrictionalContact
     contact.apply(r, T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);
-    bool                      first = true;
+    bool                      first         = true;
+    double                    best_merit    = std::numeric_limits<double>::max();
+    double                    reduction     = linear_reduction;
+    unsigned int              last_progress = 0;
 
     for (unsigned int k = 0; k < max_iterations; ++k)
       {
@@ -336,8 +340,10 @@ namespace FrictionalContact
         changed = Utilities::MPI::logical_or(changed, comm);
         if (!friction && mu > 0 && !changed && k > 0)
           {
-            friction = true; // the normal sets have settled
-            first    = true;
+            friction      = true; // the normal sets have settled
+            first         = true;
+            best_merit    = std::numeric_limits<double>::max();
+            last_progress = k;
             --k;
             continue;
           }
@@ -397,7 +403,7 @@ namespace FrictionalContact
         w                    = 0;
         const double initial = rhs.l2_norm();
         const double goal =
-          std::max(linear_reduction * initial, 0.1 * tolerance * load_norm);
+          std::max(reduction * initial, 0.1 * tolerance * load_norm);
         SolverControl                      control(10000, goal, false, false);
         const ProjectedPreconditioner<dim> preconditioner(amg, P);
         try
@@ -476,6 +482,28 @@ namespace FrictionalContact
         double       t            = 1;
         while (t > 1. / 64 && merit(t) > (1 - 1e-4 * t) * merit_before)
           t /= 2;
+        // A damped step says the direction was poor: solve the next one
+        // more accurately; full steps relax the accuracy again.
+        reduction = t < 1 ? std::max(0.1 * reduction, 1e-8) :
+                            std::min(10 * reduction, linear_reduction);
+
+        // No progress: the merit has not dropped by a tenth in 25 steps.
+        const double merit_after = merit(t);
+        if (merit_after < 0.9 * best_merit)
+          {
+            best_merit    = merit_after;
+            last_progress = k;
+          }
+        if (k > last_progress + 25)
+          {
+            result.failure = "no progress from Newton iteration " +
+                             std::to_string(last_progress + 1) + " to " +
+                             std::to_string(k + 1) +
+                             " (the stick/slip sets keep changing); try "
+                             "smaller increments, Loading/On failure = cut "
+                             "increment, or Method = accelerated primal-dual";
+            break;
+          }
         if (t < 1)
           {
             du.sadd(t, 1 - t, previous_du);

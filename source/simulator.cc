@@ -187,7 +187,6 @@ namespace FrictionalContact
     , output(prm, output_directory)
     , statistics(prm, output_directory, comm)
     , loading(prm)
-    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     , checkpoint(output_directory, comm)
   {
     prm.enter_subsection("Geometry");
@@ -202,9 +201,14 @@ namespace FrictionalContact
     lanczos_vectors      = prm.get_integer("Lanczos vectors");
     try_elastic_first    = prm.get_bool("Try the elastic solution first");
     prm.leave_subsection();
+    prm.enter_subsection("Loading");
+    cut_on_failure = prm.get("On failure") == "cut increment";
+    maximum_cuts   = prm.get_integer("Maximum cuts");
+    prm.leave_subsection();
+    times = loading.increment_times();
     prm.enter_subsection("Output");
     write_history    = prm.get_bool("Write convergence history");
-    checkpoint_every = loading.increment_times().size() > 1 ?
+    checkpoint_every = times.size() > 1 ?
                          prm.get_integer("Checkpoint every") :
                          0;
     prm.leave_subsection();
@@ -220,8 +224,14 @@ namespace FrictionalContact
   void
   Simulator<dim>::setup()
   {
+    // Made here, not in the constructor, so that a parameter error there
+    // does not meet a TimerOutput that complains about it.
+    timer = std::make_unique<TimerOutput>(mpi_communicator,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
     {
-      TimerOutput::Scope scope(timer, "Setup");
+      TimerOutput::Scope scope(*timer, "Setup");
       if (resume)
         checkpoint.load_mesh(triangulation);
       else
@@ -232,7 +242,7 @@ namespace FrictionalContact
         contact.setup(body, boundary_names);
     }
     {
-      TimerOutput::Scope scope(timer, "Assembly");
+      TimerOutput::Scope scope(*timer, "Assembly");
       body.assemble();
     }
     body.check_rigid_body_motion_is_prevented();
@@ -289,16 +299,35 @@ namespace FrictionalContact
               << " (largest singular value of T)" << std::endl;
       }
 
-    for (unsigned int l = first_increment; l < loading.increment_times().size(); ++l)
-      solve_increment(l);
-    timer.print_wall_time_statistics(mpi_communicator);
+    unsigned int cuts = 0;
+    for (unsigned int l = first_increment; l < times.size(); ++l)
+      try
+        {
+          solve_increment(l);
+          cuts = 0;
+        }
+      catch (const SolverError &error)
+        {
+          if (!cut_on_failure || cuts == maximum_cuts)
+            throw;
+          // Retry from the same state with half the increment.
+          const double t_prev = l > 0 ? times[l - 1] : 0.;
+          times.insert(times.begin() + l, (t_prev + times[l]) / 2);
+          ++cuts;
+          pcout << "Increment " << l + 1 << " failed (" << error.what()
+                << "); cut in half (cut " << cuts << " of at most "
+                << maximum_cuts << "), now " << times.size()
+                << " increments" << std::endl;
+          --l;
+        }
+    timer->print_wall_time_statistics(mpi_communicator);
 
     // One line for scripts (bench/): seconds per section, peak memory.
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     pcout << "-- summary:";
     for (const auto &[section, seconds] :
-         timer.get_summary_data(TimerOutput::total_wall_time))
+         timer->get_summary_data(TimerOutput::total_wall_time))
       pcout << ' ' << section << " = " << Utilities::MPI::max(seconds, mpi_communicator) << " s;";
     pcout << " peak memory = "
           << Utilities::MPI::max(memory.VmHWM, mpi_communicator) / 1024.
@@ -313,7 +342,7 @@ namespace FrictionalContact
   {
     if (mu_pi > 0)
       return mu_pi;
-    TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
+    TimerOutput::Scope       scope(*timer, "Smallest eigenvalue of K");
     const SmallestEigenvalue eigenvalue =
       compute_smallest_eigenvalue(body.stiffness_matrix(),
                                   linear_solver,
@@ -339,8 +368,8 @@ namespace FrictionalContact
   {
     IncrementalProblem<dim> problem{body.stiffness_matrix(), load, contact};
     problem.largest_singular_value_T = sigma_T;
-    const double t      = loading.increment_times()[l];
-    const double t_prev = l > 0 ? loading.increment_times()[l - 1] : 0.;
+    const double t      = times[l];
+    const double t_prev = l > 0 ? times[l - 1] : 0.;
     const Tensor<1, dim> motion =
       contact.obstacle_displacement(t) - contact.obstacle_displacement(t_prev);
     for (unsigned int j = 0; j < contact.n_local(); ++j)
@@ -375,12 +404,12 @@ namespace FrictionalContact
   SolveStatistics
   Simulator<dim>::solve_increment(const unsigned int l)
   {
-    const double t = loading.increment_times()[l];
+    const double t = times[l];
     contact.move_obstacle(contact.obstacle_displacement(t));
 
     // The increment of the prescribed displacements, and the configuration
     // it leads to before the rest of the increment is solved for.
-    const double t_prev = l > 0 ? loading.increment_times()[l - 1] : 0.;
+    const double t_prev = l > 0 ? times[l - 1] : 0.;
     TrilinosWrappers::MPI::Vector lifting = body.make_vector();
     body.prescribed_increment(t_prev, t, lifting);
     TrilinosWrappers::MPI::Vector start = u;
@@ -396,7 +425,7 @@ namespace FrictionalContact
     ContactResults<dim>           results;
     if (!contact.active() || try_elastic_first)
       {
-        TimerOutput::Scope scope(timer, "Elastic solve");
+        TimerOutput::Scope scope(*timer, "Elastic solve");
         const Timer        wall;
         const unsigned int setups_before = linear_solver.n_amg_setups;
         result.cg_iterations = linear_solver.solve(
@@ -440,7 +469,7 @@ namespace FrictionalContact
               problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K();
             const SolveStatistics elastic = result;
             {
-              TimerOutput::Scope scope(timer, "Contact solve");
+              TimerOutput::Scope scope(*timer, "Contact solve");
               result = contact_solver->solve(
                 problem, linear_solver, du, r, write_history);
             }
@@ -506,8 +535,8 @@ namespace FrictionalContact
                                    const ContactResults<dim>           &results,
                                    const SolveStatistics               &result)
   {
-    const double       t      = loading.increment_times()[l];
-    const unsigned int n      = loading.increment_times().size();
+    const double       t      = times[l];
+    const unsigned int n      = times.size();
     const bool         last   = l + 1 == n;
 
     // Counts of free / stick / slip and the total contact force.
@@ -576,7 +605,7 @@ namespace FrictionalContact
               << "    max |u| = " << Input::to_text(u.linfty_norm()) << std::endl;
       }
 
-    TimerOutput::Scope scope(timer, "Output");
+    TimerOutput::Scope scope(*timer, "Output");
     // The parameters go with the first results, so that a run that fails
     // before leaves an existing output folder as it was.
     if (l == 0 && (output.writes_files() || statistics.enabled()) &&
@@ -655,7 +684,7 @@ namespace FrictionalContact
     std::ostringstream             state;
     boost::archive::text_oarchive archive(state);
     const unsigned int             n_done = l + 1;
-    archive << n_done << statistics << output;
+    archive << n_done << times << statistics << output;
     checkpoint.save(triangulation,
                     body.get_dof_handler(),
                     {&u_ghosted, &forces_ghosted},
@@ -677,15 +706,15 @@ namespace FrictionalContact
     std::istringstream             state(checkpoint.load_state());
     boost::archive::text_iarchive archive(state);
     unsigned int                   n_done = 0;
-    archive >> n_done >> statistics >> output;
-    if (n_done >= loading.increment_times().size())
+    archive >> n_done >> times >> statistics >> output;
+    if (n_done >= times.size())
       throw InputError("<Resume computation>: the checkpoint in '" +
                        checkpoint.path() + "' is after increment " +
                        std::to_string(n_done) + ", but the loading history "
-                       "has only " + std::to_string(loading.increment_times().size()) +
+                       "has only " + std::to_string(times.size()) +
                        "; nothing is left to do");
     pcout << "Resuming after increment " << n_done << " (t = "
-          << Input::to_text(loading.increment_times()[n_done - 1])
+          << Input::to_text(times[n_done - 1])
           << ") from " << checkpoint.path() << std::endl;
     return n_done;
   }

@@ -55,5 +55,6 @@ namespace FrictionalContact
     double       tolerance;
     double       step_tolerance;
     unsigned int max_iterations;
+    unsigned int stagnation_window;
   };
 } // namespace FrictionalContact

@@ -116,7 +116,7 @@ namespace FrictionalContact
     OutputWriter<dim>                         output;
     StatisticsFile                            statistics;
     LoadingHistory                            loading;
-    TimerOutput                               timer;
+    std::unique_ptr<TimerOutput>              timer;
 
     /// The state after the last finished increment: total displacement,
     /// and the contact force T_j r_j of each local candidate.
@@ -128,6 +128,12 @@ namespace FrictionalContact
     Checkpoint<dim> checkpoint;
     bool            resume;
     unsigned int    checkpoint_every;
+    /// The end times of the increments: those of the loading history, with
+    /// halves inserted where an increment failed and was cut.
+    std::vector<double> times;
+    bool                cut_on_failure;
+    unsigned int        maximum_cuts;
+
     /// Increments finished before this run (when resuming).
     unsigned int    first_increment = 0;
 
