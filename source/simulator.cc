@@ -314,10 +314,9 @@ namespace FrictionalContact
           const double t_prev = l > 0 ? times[l - 1] : 0.;
           times.insert(times.begin() + l, (t_prev + times[l]) / 2);
           ++cuts;
-          pcout << "Increment " << l + 1 << " failed (" << error.what()
-                << "); cut in half (cut " << cuts << " of at most "
-                << maximum_cuts << "), now " << times.size()
-                << " increments" << std::endl;
+          pcout << "Cut in half (" << cuts << " of at most " << maximum_cuts
+                << " cuts in a row), now " << times.size()
+                << " increments, because " << error.what() << std::endl;
           --l;
         }
     timer->print_wall_time_statistics(mpi_communicator);
