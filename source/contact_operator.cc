@@ -157,7 +157,23 @@ namespace FrictionalContact
     n_global = Utilities::MPI::sum<types::global_dof_index>(
       nodes.size(), body.get_mpi_communicator());
     mpi_communicator = body.get_mpi_communicator();
-    move_obstacle(Tensor<1, dim>());
+    move_obstacle(obstacle_displacement(0.));
+
+    // The obstacle must not start inside the body.
+    double smallest_gap = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      smallest_gap = std::min(smallest_gap, reference_gap(j));
+    double extent = 0;
+    for (const Node &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        extent = std::max(extent, std::abs(node.position[d]));
+    extent = Utilities::MPI::max(extent, mpi_communicator);
+    const double overlap = -Utilities::MPI::min(smallest_gap, mpi_communicator);
+    if (overlap > 1e-12 * extent)
+      throw InputError("<Contact/Obstacle>: the obstacle starts inside the "
+                         "body, " + Input::to_text(overlap) +
+                         " deep (a negative gap); move it so that every gap "
+                         "is >= 0 at t = 0, for a plane its Point");
   }
 
 

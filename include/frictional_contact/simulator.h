@@ -57,6 +57,11 @@ namespace FrictionalContact
     }
 
   private:
+    /// Throws an InputError if a mesh of @p n_cells cells would not fit in
+    /// the memory of this machine.
+    void
+    check_memory(const double n_cells) const;
+
     /// Solves increment @p l and adds it to the state; returns its statistics.
     SolveStatistics
     solve_increment(const unsigned int l);

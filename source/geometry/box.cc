@@ -57,6 +57,15 @@ namespace FrictionalContact
           repetitions[d] = prm.get_integer(axis + " repetitions");
         }
 
+      double cells = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        cells *= repetitions[d];
+      if (cells > 1e8)
+        Input::fail("Geometry/Box/X repetitions",
+                    prm.get("X repetitions"),
+                    "the repetitions make " + Input::to_text(cells) +
+                      " cells, more than 1e8; use fewer");
+
       // The coarse mesh lives on every MPI rank: keep it small by halving
       // the repetitions while all of them stay integer, and refine back.
       n_halvings = 0;
