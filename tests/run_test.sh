@@ -21,6 +21,10 @@ if [ $status -ne 0 ]; then
   echo "*** the command failed with exit code $status:"; cat output.raw
   exit 1
 fi
+if grep -q -i -w -E -e '-?(nan|inf)' output; then
+  echo "*** the output contains NaN or Inf:"; grep -i -w -E -e '-?(nan|inf)' output
+  exit 1
+fi
 if [ "${FRICTIONAL_CONTACT_UPDATE_OUTPUT:-0}" = 1 ]; then
   cp output "$expected"; echo "updated $expected"; exit 0
 fi
