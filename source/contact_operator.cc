@@ -1,4 +1,6 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <frictional_contact/contact_operator.h>
 #include <frictional_contact/plugins.h>
@@ -111,7 +113,32 @@ namespace FrictionalContact
     const IndexSet &owned = body.locally_owned_dofs();
     // Keyed by the first dof of the vertex: each vertex once, in dof order.
     std::map<types::global_dof_index, Node> found;
+    std::map<types::global_dof_index, double> area;
     std::set<types::boundary_id>            boundaries_with_candidates;
+    const FiniteElement<dim> &fe = body.get_dof_handler().get_fe();
+    FEFaceValues<dim>         face_values(fe,
+                                  QGauss<dim - 1>(2),
+                                  update_values | update_JxW_values);
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_boundaries.count(cell->face(f)->boundary_id()) > 0)
+            {
+              // Lumped areas: the integral of each vertex's shape function
+              // (component 0 of the vector-valued Q1 element) over the face.
+              face_values.reinit(cell, f);
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const unsigned int i = fe.component_to_system_index(0, v);
+                  double             integral = 0;
+                  for (const unsigned int q :
+                       face_values.quadrature_point_indices())
+                    integral += face_values.shape_value(i, q) * face_values.JxW(q);
+                  if (integral > 0)
+                    area[cell->vertex_dof_index(v, 0)] += integral;
+                }
+            }
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto &face : cell->face_iterators())
@@ -135,6 +162,7 @@ namespace FrictionalContact
                   continue;
                 boundaries_with_candidates.insert(face->boundary_id());
                 node.position = face->vertex(v);
+                node.area     = area[first_dof];
                 found.emplace(first_dof, node);
               }
 

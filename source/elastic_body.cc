@@ -37,6 +37,10 @@ namespace FrictionalContact
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    hanging_node_constraints.close();
     for (const auto &fixed : conditions.fixed_boundaries)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                fixed.id,
@@ -259,12 +263,14 @@ namespace FrictionalContact
           cell_matrix.vmult(cell_residual, cell_u);
           cell_residual.add(-load_factor, cell_load);
           cell->get_dof_indices(dof_indices);
-          residual.add(dof_indices, cell_residual);
+          // The force at a hanging node acts on the nodes it hangs from.
+          hanging_node_constraints.distribute_local_to_global(cell_residual,
+                                                              dof_indices,
+                                                              residual);
         }
     residual.compress(VectorOperation::add);
 
-    // Only the dofs held by a fixed boundary carry a support reaction;
-    // hanging-node constraints are not supports.
+    // Only the dofs held by a fixed boundary carry a support reaction.
     Tensor<1, dim> reaction_here;
     for (unsigned int c = 0; c < dim; ++c)
       for (const auto g : component_dofs[c])

@@ -231,7 +231,8 @@ namespace FrictionalContact
     const IndexSet scalar_owned = scalar_dof_handler.locally_owned_dofs();
     const IndexSet scalar_relevant =
       DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
-    Vector gap(scalar_owned, comm), state(scalar_owned, comm);
+    Vector gap(scalar_owned, comm), state(scalar_owned, comm),
+      pressure(scalar_owned, comm);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -247,6 +248,7 @@ namespace FrictionalContact
                 {
                   gap[s]   = results.gap[it->second];
                   state[s] = static_cast<double>(results.state[it->second]);
+                  pressure[s] = results.pressure[it->second];
                 }
               else
                 {
@@ -260,10 +262,13 @@ namespace FrictionalContact
         }
     gap.compress(VectorOperation::insert);
     state.compress(VectorOperation::insert);
+    pressure.compress(VectorOperation::insert);
     Vector gap_ghosted(scalar_owned, scalar_relevant, comm);
     Vector state_ghosted(scalar_owned, scalar_relevant, comm);
-    gap_ghosted   = gap;
-    state_ghosted = state;
+    Vector pressure_ghosted(scalar_owned, scalar_relevant, comm);
+    gap_ghosted      = gap;
+    state_ghosted    = state;
+    pressure_ghosted = pressure;
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -288,6 +293,9 @@ namespace FrictionalContact
     data_out.add_data_vector(scalar_dof_handler,
                              state_ghosted,
                              "contact_state");
+    data_out.add_data_vector(scalar_dof_handler,
+                             pressure_ghosted,
+                             "contact_pressure");
     dealii::Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
     data_out.add_data_vector(subdomain, "subdomain");
@@ -349,6 +357,8 @@ namespace FrictionalContact
         number(row, results.gap[j]);
         for (unsigned int d = 0; d < dim; ++d)
           number(row, results.reaction[j][d]);
+        number(row, contact.nodal_area(j));
+        number(row, results.pressure[j]);
         row << ',' << state_name(results.state[j]);
         rows.push_back(row.str());
       }
@@ -356,7 +366,7 @@ namespace FrictionalContact
     for (unsigned int d = 1; d < dim; ++d)
       contact_header += ",rt" + std::to_string(d);
     write_sorted_table(directory + "/contact-" + suffix.str(),
-                       contact_header + ",state",
+                       contact_header + ",area,pressure,state",
                        rows,
                        dim,
                        comm);

@@ -96,6 +96,24 @@ namespace FrictionalContact
                       Patterns::Integer(0, 12),
                       "How often every cell of the geometry's mesh is split "
                       "in 2^dim (0 to 12).");
+    prm.declare_entry("Local refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "After the global refinements, how often the cells "
+                      "near Refinement center are split again (0 to 12), "
+                      "for example around the contact zone. Hanging nodes "
+                      "between the levels are constrained; keep them out "
+                      "of the contact zone (they are not contact "
+                      "candidates).");
+    prm.declare_entry("Refinement center",
+                      dim == 2 ? "0, 0" : "0, 0, 0",
+                      Patterns::Anything(),
+                      "Centre of the region of local refinement (length).");
+    prm.declare_entry("Refinement radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Cells reaching closer than this to Refinement center "
+                      "are refined locally (length, >= 0).");
     prm.leave_subsection();
 
     LinearElasticMaterial<dim>::declare_parameters(prm);
@@ -192,6 +210,14 @@ namespace FrictionalContact
   {
     prm.enter_subsection("Geometry");
     global_refinements = prm.get_integer("Global refinements");
+    local_refinements  = prm.get_integer("Local refinements");
+    local_refinement_center = Point<dim>(Input::parse_vector<dim>(
+      "Geometry/Refinement center", prm.get("Refinement center")));
+    local_refinement_radius = prm.get_double("Refinement radius");
+    if (local_refinements > 0 && !(local_refinement_radius > 0))
+      Input::fail("Geometry/Refinement radius",
+                  prm.get("Refinement radius"),
+                  "Local refinements > 0 needs a positive radius");
     prm.leave_subsection();
     const std::string resume_choice = prm.get("Resume computation");
     resume = resume_choice == "true" ||
@@ -273,6 +299,16 @@ namespace FrictionalContact
           check_memory(triangulation.n_global_active_cells() *
                        std::pow(2., dim * refinements));
           triangulation.refine_global(refinements);
+          for (unsigned int i = 0; i < local_refinements; ++i)
+            {
+              for (const auto &cell : triangulation.active_cell_iterators())
+                if (cell->is_locally_owned() &&
+                    cell->center().distance(local_refinement_center) <
+                      local_refinement_radius + 0.5 * cell->diameter())
+                  cell->set_refine_flag();
+              triangulation.execute_coarsening_and_refinement();
+              check_memory(triangulation.n_global_active_cells());
+            }
         }
       body.setup();
       if (contact.active())
@@ -558,6 +594,8 @@ namespace FrictionalContact
         results.gap.push_back(problem.gaps[j] -
                               results.local_displacement.back()[0]);
         results.state.push_back(contact.friction_cone().state(r[j]));
+        const double area = contact.nodal_area(j);
+        results.pressure.push_back(area > 0 ? -r[j][0] / area : 0.);
       }
     return results;
   }
@@ -580,9 +618,17 @@ namespace FrictionalContact
     Tensor<1, dim> contact_force;
     double         normal_force = 0;
     Tensor<1, dim> tangential_force;
+    // Areas of the nodes in contact and of those sticking (lumped nodal
+    // areas, see ContactOperator::nodal_area), the largest pressure.
+    double contact_area = 0, stick_area = 0, max_pressure = 0;
     for (unsigned int j = 0; j < results.state.size(); ++j)
       {
         ++counts[static_cast<int>(results.state[j])];
+        if (results.state[j] != ContactState::free)
+          contact_area += contact.nodal_area(j);
+        if (results.state[j] == ContactState::stick)
+          stick_area += contact.nodal_area(j);
+        max_pressure = std::max(max_pressure, results.pressure[j]);
         contact_force += contact_forces[j];
         normal_force -= results.reaction[j][0];
         Tensor<1, dim> normal_part;
@@ -593,6 +639,9 @@ namespace FrictionalContact
     contact_force    = Utilities::MPI::sum(contact_force, mpi_communicator);
     normal_force     = Utilities::MPI::sum(normal_force, mpi_communicator);
     tangential_force = Utilities::MPI::sum(tangential_force, mpi_communicator);
+    contact_area     = Utilities::MPI::sum(contact_area, mpi_communicator);
+    stick_area       = Utilities::MPI::sum(stick_area, mpi_communicator);
+    max_pressure     = Utilities::MPI::max(max_pressure, mpi_communicator);
 
     const Residuals &res = result.residuals;
     pcout << "Increment " << l + 1 << "/" << n << ", t = " << Input::to_text(t);
@@ -666,8 +715,14 @@ namespace FrictionalContact
     statistics.add("Free nodes", counts[0]);
     statistics.add("Stick nodes", counts[1]);
     statistics.add("Slip nodes", counts[2]);
+    for (unsigned int d = 0; d < dim; ++d)
+      statistics.add_scientific(std::string("Contact force ") + "xyz"[d],
+                                contact_force[d]);
     statistics.add_scientific("Normal contact force", normal_force);
     statistics.add_scientific("Tangential contact force", tangential_force.norm());
+    statistics.add_scientific("Contact area", contact_area);
+    statistics.add_scientific("Stick area", stick_area);
+    statistics.add_scientific("Max contact pressure", max_pressure);
     statistics.add_scientific("Max displacement", u.linfty_norm());
     statistics.add_scientific("Max displacement increment", du.linfty_norm());
     statistics.write();

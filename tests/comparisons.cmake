@@ -182,3 +182,29 @@ contact_compare_tables(extreme_stiff_newton.same_displacement
   ${CMAKE_CURRENT_BINARY_DIR}/units_newton_reference/output-units_newton_reference/displacement-00001.csv
   ${CMAKE_CURRENT_BINARY_DIR}/extreme_stiff_newton/output-extreme_stiff_newton/displacement-00001.csv
   --keys x,y --columns ux,uy --tolerance 1e-8)
+
+# Classical solutions (check_analytic.py): Hertz's contact radius and peak
+# pressure, Cattaneo-Mindlin's stick zone, the sliding block's T = mu N.
+foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
+              cattaneo_3d:cattaneo sliding_block:sliding)
+  string(REPLACE ":" ";" _case ${_case})
+  list(GET _case 0 _test)
+  list(GET _case 1 _problem)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  set_tests_properties(${_test} PROPERTIES FIXTURES_SETUP ${_test})
+  add_test(NAME ${_test}.analytic
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py
+      ${_problem} ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base})
+  set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
+endforeach()
+
+# The mesh from a file gives the same results on one and two ranks.
+set_tests_properties(roller_2d PROPERTIES FIXTURES_SETUP roller_2d)
+set_tests_properties(roller_2d.mpirun=2 PROPERTIES FIXTURES_SETUP roller_2d.mpirun=2)
+add_test(NAME roller_2d.same_on_two_ranks
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/roller_2d.mpirun=2/output-roller_2d/statistics
+    --rows 1-2 --same-as ${CMAKE_CURRENT_BINARY_DIR}/roller_2d/output-roller_2d/statistics
+    "Normal contact force" --tolerance 1e-8)
+set_tests_properties(roller_2d.same_on_two_ranks PROPERTIES
+  FIXTURES_REQUIRED "roller_2d;roller_2d.mpirun=2")

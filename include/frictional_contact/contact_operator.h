@@ -174,6 +174,17 @@ namespace FrictionalContact
       return nodes[j].position;
     }
 
+    /**
+     * The lumped area of candidate j (length in 2D): the integral over the
+     * contact boundary faces of the node's Q1 shape function. The contact
+     * pressure of the node is its normal reaction divided by this area.
+     */
+    double
+    nodal_area(const unsigned int j) const
+    {
+      return nodes[j].area;
+    }
+
     /// The vector x with components x_c = sum_k T_j(c,k) v_k at node j.
     Tensor<1, dim>
     to_cartesian(const unsigned int j, const Tensor<1, dim> &v) const;
@@ -210,6 +221,8 @@ namespace FrictionalContact
       std::array<bool, dim> free;
       /// t_n,j: unit vector pointing into the obstacle.
       Tensor<1, dim> into_obstacle;
+      /// Lumped area on the contact boundaries (see nodal_area()).
+      double area = 0;
     };
 
     FrictionCone<dim>                            cone;

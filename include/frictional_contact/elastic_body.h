@@ -173,6 +173,8 @@ namespace FrictionalContact
     std::array<IndexSet, dim> component_dofs;
 
     AffineConstraints<double>      constraints;
+    /// Only the hanging-node part of constraints (for support reactions).
+    AffineConstraints<double>      hanging_node_constraints;
     /// Locally owned dofs of prescribed (not fixed) boundaries.
     IndexSet                       prescribed_dofs;
     TrilinosWrappers::SparseMatrix stiffness;

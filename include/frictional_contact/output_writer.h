@@ -27,6 +27,8 @@ namespace FrictionalContact
     /// Gap remaining after the increment, g_j - t_n,j^T du (linearised).
     std::vector<double>       gap;
     std::vector<ContactState> state;
+    /// Contact pressure -r_n / (lumped nodal area) (force/area, >= 0).
+    std::vector<double> pressure;
   };
 
   /**

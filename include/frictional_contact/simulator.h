@@ -143,6 +143,11 @@ namespace FrictionalContact
     unsigned int    first_increment = 0;
 
     unsigned int global_refinements;
+    /// Cells within local_refinement_radius of local_refinement_center are
+    /// split local_refinements more times (hanging nodes between levels).
+    unsigned int local_refinements;
+    Point<dim>   local_refinement_center;
+    double       local_refinement_radius;
     double       eigenvalue_tolerance;
     unsigned int lanczos_vectors;
     bool         try_elastic_first;

@@ -1,0 +1,21 @@
+// A 2D half disc of radius 1, flat face on top at y = 1, curved face down,
+// touching y = 0 at the origin; quadrilaterals, finer near the contact.
+// Regenerate: gmsh -2 -format msh22 half_disc.geo -o half_disc.msh
+R = 1;
+h_far = 0.2;      // cell size at the top
+h_contact = 0.03; // cell size at the bottom point
+Point(1) = {0, R, 0, h_far};      // centre
+Point(2) = {-R, R, 0, h_far};
+Point(3) = {0, 0, 0, h_contact};  // bottom point
+Point(4) = {R, R, 0, h_far};
+Circle(1) = {2, 1, 3};
+Circle(2) = {3, 1, 4};
+Line(3) = {4, 2};
+Curve Loop(1) = {1, 2, 3};
+Plane Surface(1) = {1};
+Physical Curve("curved", 1) = {1, 2};
+Physical Curve("top", 2) = {3};
+Physical Surface("body", 1) = {1};
+Mesh.RecombineAll = 1;
+Mesh.Algorithm = 6;            // frontal-Delaunay, then recombined
+Mesh.SubdivisionAlgorithm = 1; // all quadrilaterals

@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Compares a run of a half-ball scene (parameters/hertz_*.prm,
+cattaneo_*.prm) or of a dragged block (sliding_block.prm) with the
+classical solutions of contact mechanics. Reads the run's `statistics`,
+`parameters.prm` and, for the element size, its last `contact-NNNNN.csv`.
+
+usage: check_analytic.py hertz OUTPUT_DIR [--radius-tolerance 0.05]
+                                          [--pressure-tolerance 0.10]
+       check_analytic.py cattaneo OUTPUT_DIR --rows FIRST-LAST
+       check_analytic.py sliding OUTPUT_DIR [--tolerance 1e-6]
+
+hertz: contact radius (3D) or half-width (2D) and peak pressure against
+  Hertz's formulas for the measured total normal force P, relative errors
+  within the tolerances. The contact radius is that of the area of the
+  nodes in contact (sum of their lumped areas, all symmetric copies: a =
+  sqrt(A / pi), or A / 2 in 2D); the peak pressure is the largest nodal
+  pressure (normal reaction over lumped area).
+cattaneo: on each row, the stick zone's radius (from the stick area, as
+  above) within one element size of a (1 - Q / (mu P))^k, k = 1/3 for the
+  ball (Mindlin), 1/2 for the cylinder, with a the measured contact radius.
+sliding: rows where every node in contact slips have T = mu N (relative
+  tolerance), rows with sticking nodes have T < mu N; at least one of each.
+"""
+import argparse
+import glob
+import math
+import re
+import sys
+
+
+def read_statistics(path):
+    columns, rows = {}, []
+    with open(path) as f:
+        for line in f:
+            match = re.match(r"#\s*(\d+):\s*(.*?)\s*$", line)
+            if match:
+                columns[match.group(2)] = int(match.group(1)) - 1
+            elif line.strip() and not line.startswith("#"):
+                rows.append([float(x) for x in line.split()])
+    return [{name: row[i] for name, i in columns.items()} for row in rows]
+
+
+def read_parameters(path):
+    """'Material/Young's modulus' -> '1' from a ShortPRM file."""
+    values, sections = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                sections.append(line[len("subsection "):].strip())
+            elif line == "end":
+                sections.pop()
+            elif line.startswith("set "):
+                key, value = line[4:].split("=", 1)
+                values["/".join(sections + [key.strip()])] = value.strip()
+    return values
+
+
+class Scene:
+    def __init__(self, directory):
+        p = read_parameters(directory + "/parameters.prm")
+        self.rows = read_statistics(directory + "/statistics")
+        self.dim = int(p.get("Dimension", "2"))
+        self.E = float(p["Material/Young's modulus"])
+        self.nu = float(p["Material/Poisson's ratio"])
+        plane_stress = self.dim == 2 and \
+            p["Material/Two-dimensional model"] == "plane stress"
+        self.E_star = self.E if plane_stress else self.E / (1 - self.nu ** 2)
+        self.mu = float(p["Contact/Friction coefficient"])
+        self.radius = float(p.get("Geometry/Half ball/Radius", "nan"))
+        self.planes = int(p.get("Geometry/Half ball/Symmetry planes", "0"))
+        self.copies = 2 ** self.planes
+        self.directory = directory
+
+    def normal_force(self, row):
+        return self.copies * row["Contact force " + "xyz"[self.dim - 1]]
+
+    def tangential_force(self, row):
+        # Components along the surface not cut by a symmetry plane (x is
+        # cut by the first plane, y by the second).
+        axes = [a for a in range(self.planes, self.dim - 1)]
+        return self.copies * math.sqrt(
+            sum(row["Contact force " + "xyz"[a]] ** 2 for a in axes))
+
+    def radius_of_area(self, area):
+        area *= self.copies
+        return area / 2 if self.dim == 2 else math.sqrt(area / math.pi)
+
+    def element_size(self):
+        """Median distance from a node in contact to its nearest neighbour."""
+        files = sorted(glob.glob(self.directory + "/contact-*.csv"))
+        if not files:
+            sys.exit("no contact-*.csv: set Output/Write csv tables = true")
+        with open(files[-1]) as f:
+            header = f.readline().strip().split(",")
+            points = []
+            for line in f:
+                row = dict(zip(header, line.strip().split(",")))
+                if row["state"] != "free":
+                    points.append([float(row[c]) for c in "xyz"[:self.dim]])
+        distances = sorted(min(math.dist(p, q) for q in points if q is not p)
+                           for p in points)
+        return distances[len(distances) // 2]
+
+
+def check_hertz(scene, args):
+    row = scene.rows[-1]
+    P, R, E = scene.normal_force(row), scene.radius, scene.E_star
+    a = scene.radius_of_area(row["Contact area"])
+    p0 = row["Max contact pressure"]
+    if scene.dim == 2:
+        a_hertz = math.sqrt(4 * P * R / (math.pi * E))
+        p_hertz = 2 * P / (math.pi * a_hertz)
+    else:
+        a_hertz = (3 * P * R / (4 * E)) ** (1 / 3)
+        p_hertz = 3 * P / (2 * math.pi * a_hertz ** 2)
+    error_a = abs(a - a_hertz) / a_hertz
+    error_p = abs(p0 - p_hertz) / p_hertz
+    ok = error_a <= args.radius_tolerance and error_p <= args.pressure_tolerance
+    name = "half-width" if scene.dim == 2 else "radius"
+    print(f"Hertz {scene.dim}D: P = {P:.6g}, contact {name} {a:.6g} against "
+          f"{a_hertz:.6g} (error {100 * error_a:.2f} %, allowed "
+          f"{100 * args.radius_tolerance:g} %), peak pressure {p0:.6g} against "
+          f"{p_hertz:.6g} (error {100 * error_p:.2f} %, allowed "
+          f"{100 * args.pressure_tolerance:g} %)")
+    return ok
+
+
+def check_cattaneo(scene, args):
+    first, last = (int(x) for x in args.rows.split("-"))
+    h = scene.element_size()
+    exponent = 1 / 2 if scene.dim == 2 else 1 / 3
+    ok = len(scene.rows) >= last
+    for row in scene.rows[first - 1:last]:
+        P, Q = scene.normal_force(row), scene.tangential_force(row)
+        a = scene.radius_of_area(row["Contact area"])
+        c = scene.radius_of_area(row["Stick area"])
+        ratio = Q / (scene.mu * P)
+        c_theory = a * (1 - ratio) ** exponent
+        passed = 0 < ratio < 1 and abs(c - c_theory) <= h
+        ok = ok and passed
+        print(f"increment {int(row['Increment'])}: Q / (mu P) = {ratio:.4f}, "
+              f"a = {a:.5g}, stick radius {c:.5g} against {c_theory:.5g} "
+              f"(difference {abs(c - c_theory):.2g}, element size {h:.2g}: "
+              f"{'ok' if passed else 'TOO LARGE'})")
+    return ok
+
+
+def check_sliding(scene, args):
+    sliding = sticking = 0
+    ok = True
+    for row in scene.rows:
+        N, T = row["Normal contact force"], row["Tangential contact force"]
+        if N <= 0:
+            continue
+        ratio = T / N
+        if row["Stick nodes"] == 0 and row["Slip nodes"] > 0:
+            sliding += 1
+            error = abs(ratio - scene.mu) / scene.mu
+            passed = error <= args.tolerance
+            print(f"increment {int(row['Increment'])}: slides, T / N = "
+                  f"{ratio:.10f} (relative error {error:.1e}, "
+                  f"{'ok' if passed else 'ABOVE'} {args.tolerance:g})")
+        else:
+            sticking += 1
+            passed = ratio < scene.mu
+            print(f"increment {int(row['Increment'])}: sticks "
+                  f"({int(row['Stick nodes'])} nodes), T / N = {ratio:.6f} "
+                  f"({'<' if passed else 'NOT <'} mu = {scene.mu:g})")
+        ok = ok and passed
+    if sliding == 0 or sticking == 0:
+        print(f"expected increments that stick and that slide, got "
+              f"{sticking} and {sliding}")
+        ok = False
+    return ok
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("problem", choices=["hertz", "cattaneo", "sliding"])
+    parser.add_argument("directory")
+    parser.add_argument("--radius-tolerance", type=float, default=0.05)
+    parser.add_argument("--pressure-tolerance", type=float, default=0.10)
+    parser.add_argument("--rows", default="2-3")
+    parser.add_argument("--tolerance", type=float, default=1e-6)
+    args = parser.parse_args()
+    scene = Scene(args.directory)
+    check = {"hertz": check_hertz, "cattaneo": check_cattaneo,
+             "sliding": check_sliding}[args.problem]
+    ok = check(scene, args)
+    print("PASSED" if ok else "FAILED")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
