@@ -9,7 +9,7 @@ soon as it is measured; instances already in the CSV are skipped, so an
 interrupted run continues where it stopped.
 
 usage: bench/run_series.py [--quick] [--ranks N] [--solvers a,b]
-                           [--series ex1,ex2,mu] [--max-n-y N]
+                           [--series ex1,ex2,mu] [--max-n-y N] [--sizes a,b]
                            [--csv doc/benchmarks/series.csv]
 Run from the top of the repository after scripts/setup.sh.
 """
@@ -148,6 +148,10 @@ def main():
     parser.add_argument("--series", default="ex1,ex2,mu")
     parser.add_argument("--max-n-y", type=int, default=1000,
                         help="skip larger instances")
+    parser.add_argument("--sizes", default="",
+                        help="N_Y values (comma-separated) instead of the "
+                             "paper's, e.g. --series ex2 --sizes 55 --ranks 2 "
+                             "for the scale run (d above 10^6)")
     parser.add_argument("--csv", default="doc/benchmarks/series.csv")
     parser.add_argument("--contact", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "build", "contact"),
@@ -156,12 +160,13 @@ def main():
 
     instances = []
     series = args.series.split(",")
+    custom = [int(n) for n in args.sizes.split(",") if n]
     if "ex1" in series:
         sizes = [26, 40] if args.quick else [26, 40, 54, 68, 80, 92, 104, 114, 124, 134, 144]
-        instances += [(1, n, 0.5) for n in sizes]
+        instances += [(1, n, 0.5) for n in (custom or sizes)]
     if "ex2" in series:
         sizes = [10, 12] if args.quick else list(range(10, 29, 2))
-        instances += [(2, n, 0.5) for n in sizes]
+        instances += [(2, n, 0.5) for n in (custom or sizes)]
     if "mu" in series and not args.quick:
         instances += [(2, 20, mu) for mu in (1.0, 1.5)]
     instances = [i for i in instances if i[1] <= args.max_n_y]
