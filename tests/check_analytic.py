@@ -24,20 +24,17 @@ sliding: rows where every node in contact slips have T = mu N (relative
 import argparse
 import glob
 import math
-import re
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import check_statistics  # noqa: E402
 
 
 def read_statistics(path):
-    columns, rows = {}, []
-    with open(path) as f:
-        for line in f:
-            match = re.match(r"#\s*(\d+):\s*(.*?)\s*$", line)
-            if match:
-                columns[match.group(2)] = int(match.group(1)) - 1
-            elif line.strip() and not line.startswith("#"):
-                rows.append([float(x) for x in line.split()])
-    return [{name: row[i] for name, i in columns.items()} for row in rows]
+    """The rows of a statistics file as {column name: value}."""
+    columns, rows = check_statistics.read_statistics(path)
+    return [{name: float(row[i]) for name, i in columns.items()} for row in rows]
 
 
 def read_parameters(path):
