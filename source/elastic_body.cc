@@ -201,6 +201,20 @@ namespace FrictionalContact
         stiffness.vmult(force, u);
         return;
       }
+    Vector u_ghosted = make_ghosted_vector();
+    u_ghosted        = u;
+    element_forces(u_ghosted, 0., constraints, force);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::element_forces(const Vector                    &u_ghosted,
+                                   const double                     load_factor,
+                                   const AffineConstraints<double> &distribute,
+                                   Vector                          &force) const
+  {
     const QGauss<dim>     quadrature(2);
     const QGauss<dim - 1> face_quadrature(2);
     FEValues<dim>         fe_values(fe,
@@ -216,17 +230,16 @@ namespace FrictionalContact
       cell_force(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
-    Vector u_ghosted = make_ghosted_vector();
-    u_ghosted        = u;
-    force            = 0;
+    force = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
           cell->get_dof_values(u_ghosted, cell_u);
           cell_matrix.vmult(cell_force, cell_u);
+          cell_force.add(-load_factor, cell_load);
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_force, dof_indices, force);
+          distribute.distribute_local_to_global(cell_force, dof_indices, force);
         }
     force.compress(VectorOperation::add);
   }
@@ -238,37 +251,9 @@ namespace FrictionalContact
   ElasticBody<dim>::support_reaction(const Vector &u,
                                      const double  load_factor) const
   {
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim>         fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-
-    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
-    dealii::Vector<double> cell_load(dofs_per_cell), cell_u(dofs_per_cell),
-      cell_residual(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-
+    // The force at a hanging node acts on the nodes it hangs from.
     Vector residual(owned_dofs, mpi_communicator);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
-          cell->get_dof_values(u, cell_u);
-          cell_matrix.vmult(cell_residual, cell_u);
-          cell_residual.add(-load_factor, cell_load);
-          cell->get_dof_indices(dof_indices);
-          // The force at a hanging node acts on the nodes it hangs from.
-          hanging_node_constraints.distribute_local_to_global(cell_residual,
-                                                              dof_indices,
-                                                              residual);
-        }
-    residual.compress(VectorOperation::add);
+    element_forces(u, load_factor, hanging_node_constraints, residual);
 
     // Only the dofs held by a fixed boundary carry a support reaction.
     Tensor<1, dim> reaction_here;

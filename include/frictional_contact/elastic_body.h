@@ -154,6 +154,17 @@ namespace FrictionalContact
 
   private:
     /// Element stiffness matrix and load vector (load factor 1) of @p cell.
+    /**
+     * force = sum over the locally owned cells of K_e u_e - load_factor p_e,
+     * distributed with @p distribute (all constraints, or only the
+     * hanging-node ones). @p u_ghosted must have ghost entries.
+     */
+    void
+    element_forces(const Vector                    &u_ghosted,
+                   const double                     load_factor,
+                   const AffineConstraints<double> &distribute,
+                   Vector                          &force) const;
+
     void
     assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                   FEValues<dim>          &fe_values,
