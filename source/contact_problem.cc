@@ -15,7 +15,7 @@ namespace FrictionalContact
     scratch -= problem.load;
     scratch -= T_r;
 
-    const ContactOperator<dim> &contact = problem.contact;
+    const ContactMap<dim>      &contact = problem.contact;
     const double                mu      = contact.friction_coefficient();
     double local[2]                     = {0., 0.};
     for (unsigned int j = 0; j < contact.n_local(); ++j)

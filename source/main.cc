@@ -2,6 +2,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <frictional_contact/fclib_problem.h>
+#include <frictional_contact/fclib_solve.h>
 #include <frictional_contact/input.h>
 #include <frictional_contact/simulator.h>
 
@@ -24,6 +26,20 @@ namespace
     "file sets them)\n"
     "  --json                     with --print-parameters: as JSON, with "
     "defaults\n"
+    "  --fclib-export <list>      write the incremental problems of these\n"
+    "                             increments ('1,3' or 'all') as FCLIB files\n"
+    "                             (sets Output/FCLIB export)\n"
+    "\n"
+    "  contact --fclib <problem.hdf5> [options] [parameter file]\n"
+    "solves an FCLIB global problem with the accelerated primal-dual method\n"
+    "(settings from the parameter file's Contact solver and Linear solver\n"
+    "subsections) and prints the residuals and FCLIB's error measure:\n"
+    "  --solution <file.hdf5>     write the problem and its solution there\n"
+    "  --evaluate <file.hdf5>     instead of solving, evaluate the solution\n"
+    "                             stored in this file\n"
+    "  --reference <file.hdf5>    with --evaluate: also print the relative\n"
+    "                             difference to the solution stored here\n"
+    "\n"
     "  --help                     this text\n"
     "  --version                  the program's version\n";
 
@@ -64,14 +80,34 @@ namespace
     print_parameters_as_json
   };
 
+  /// What the command line asks for.
+  struct Options
+  {
+    std::string file_name;
+    bool        print_parameters = false;
+    bool        json             = false;
+    std::string fclib_export;
+    std::string fclib_problem;
+    std::string solution;
+    std::string evaluate;
+    std::string reference;
+  };
+
   template <int dim>
   void
-  run(const std::string &file_name, const Task task)
+  run(const Options &options, const Task task)
   {
-    ParameterHandler prm;
+    const std::string &file_name = options.file_name;
+    ParameterHandler   prm;
     Simulator<dim>::declare_parameters(prm);
     if (!file_name.empty())
       prm.parse_input(file_name);
+    if (!options.fclib_export.empty())
+      {
+        prm.enter_subsection("Output");
+        prm.set("FCLIB export", options.fclib_export);
+        prm.leave_subsection();
+      }
     if (task != Task::run)
       {
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -97,6 +133,26 @@ namespace
     }
     if (failure)
       std::rethrow_exception(failure);
+  }
+
+  /// The --fclib mode: solves or evaluates an FCLIB global problem.
+  template <int dim>
+  void
+  run_fclib(const Options &options, FclibProblem problem)
+  {
+    ParameterHandler prm;
+    Simulator<dim>::declare_parameters(prm);
+    FclibSolve<dim>::set_defaults(prm);
+    if (!options.file_name.empty())
+      prm.parse_input(options.file_name);
+    FclibSolve<dim> fclib(prm,
+                          std::move(problem),
+                          options.fclib_problem,
+                          MPI_COMM_WORLD);
+    if (!options.evaluate.empty())
+      fclib.evaluate(options.evaluate, options.reference);
+    else
+      fclib.solve(options.solution);
   }
 
   /// One line: the exception's own message without deal.II's frame.
@@ -126,14 +182,19 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool  is_root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::string file_name;
-  bool        print_parameters = false;
-  bool        json             = false;
+  Options     options;
   try
     {
       for (int i = 1; i < argc; ++i)
         {
           const std::string argument = argv[i];
+          // The value of an option such as --fclib <file>.
+          const auto value = [&]() {
+            if (i + 1 == argc)
+              throw InputError("the option '" + argument +
+                               "' needs a value; see contact --help");
+            return std::string(argv[++i]);
+          };
           if (argument == "--help" || argument == "-h")
             {
               if (is_root)
@@ -148,37 +209,66 @@ main(int argc, char *argv[])
               return 0;
             }
           else if (argument == "--print-parameters")
-            print_parameters = true;
+            options.print_parameters = true;
           else if (argument == "--json")
-            json = true;
+            options.json = true;
+          else if (argument == "--fclib-export")
+            options.fclib_export = value();
+          else if (argument == "--fclib")
+            options.fclib_problem = value();
+          else if (argument == "--solution")
+            options.solution = value();
+          else if (argument == "--evaluate")
+            options.evaluate = value();
+          else if (argument == "--reference")
+            options.reference = value();
           else if (!argument.empty() && argument[0] == '-')
             throw InputError("unknown option '" + argument +
                              "'; see contact --help");
-          else if (file_name.empty())
-            file_name = argument;
+          else if (options.file_name.empty())
+            options.file_name = argument;
           else
             throw InputError("more than one parameter file given ('" +
-                             file_name + "' and '" + argument +
+                             options.file_name + "' and '" + argument +
                              "'); see contact --help");
         }
-      if (file_name.empty() && !print_parameters)
+      const std::string &file_name = options.file_name;
+      if (!file_name.empty())
+        read_parameter_file(file_name);
+      const bool fclib_mode = !options.fclib_problem.empty();
+      if (!fclib_mode && (!options.solution.empty() ||
+                          !options.evaluate.empty() ||
+                          !options.reference.empty()))
+        throw InputError("--solution, --evaluate and --reference go with "
+                         "--fclib <problem.hdf5>; see contact --help");
+      if (!options.reference.empty() && options.evaluate.empty())
+        throw InputError("--reference goes with --evaluate; see contact --help");
+      if (fclib_mode)
+        {
+          if (options.print_parameters || !options.fclib_export.empty())
+            throw InputError("--fclib runs on its own, without "
+                             "--print-parameters or --fclib-export; see "
+                             "contact --help");
+          FclibProblem problem = read_fclib_problem(options.fclib_problem);
+          if (problem.spacedim == 2)
+            run_fclib<2>(options, std::move(problem));
+          else
+            run_fclib<3>(options, std::move(problem));
+          return 0;
+        }
+      if (file_name.empty() && !options.print_parameters)
         throw InputError("no parameter file given; see contact --help");
 
-      unsigned int dim = 2;
-      if (!file_name.empty())
-        {
-          read_parameter_file(file_name);
-          dim = read_dimension(file_name);
-        }
-      const Task task = !print_parameters ? Task::run :
-                        json              ? Task::print_parameters_as_json :
-                                            Task::print_parameters;
-      if (json && !print_parameters)
+      const unsigned int dim = file_name.empty() ? 2 : read_dimension(file_name);
+      const Task task = !options.print_parameters ? Task::run :
+                        options.json ? Task::print_parameters_as_json :
+                                       Task::print_parameters;
+      if (options.json && !options.print_parameters)
         throw InputError("--json goes with --print-parameters; see contact --help");
       if (dim == 2)
-        run<2>(file_name, task);
+        run<2>(options, task);
       else
-        run<3>(file_name, task);
+        run<3>(options, task);
     }
   catch (const InputError &e)
     {

@@ -109,7 +109,7 @@ namespace FrictionalContact
                                const bool record_history) const
   {
     const Timer                 timer;
-    const ContactOperator<dim> &contact = problem.contact;
+    const ContactMap<dim>      &contact = problem.contact;
     const FrictionCone<dim>    &cone    = contact.friction_cone();
     const double                mu      = cone.mu;
     const unsigned int          c_local = contact.n_local();

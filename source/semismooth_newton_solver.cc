@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <frictional_contact/contact_operator.h>
 #include <frictional_contact/plugins.h>
 #include <frictional_contact/semismooth_newton_solver.h>
 
@@ -230,7 +231,14 @@ namespace FrictionalContact
                                      const bool record_history) const
   {
     const Timer                           timer;
-    const ContactOperator<dim>           &contact = problem.contact;
+    // The active-set steps work node by node, in the nodes' frames.
+    const auto *frames =
+      dynamic_cast<const ContactOperator<dim> *>(&problem.contact);
+    AssertThrow(frames != nullptr,
+                ExcMessage("the semismooth Newton method needs the contact "
+                           "candidates of a mesh (one node each, orthonormal "
+                           "frames)"));
+    const ContactOperator<dim>           &contact = *frames;
     const TrilinosWrappers::SparseMatrix &K       = problem.stiffness;
     const double       mu       = contact.friction_coefficient();
     const unsigned int n        = contact.n_local();

@@ -155,6 +155,7 @@ namespace FrictionalContact
 
     OutputWriter<dim>::declare_parameters(prm);
     StatisticsFile::declare_parameters(prm);
+    FclibExport::declare_parameters(prm);
     prm.enter_subsection("Output");
     prm.declare_entry("Checkpoint every",
                       "1",
@@ -205,6 +206,7 @@ namespace FrictionalContact
     }())
     , output(prm, output_directory)
     , statistics(prm, output_directory, comm)
+    , fclib_export(prm, output_directory)
     , loading(prm)
     , checkpoint(output_directory, comm)
   {
@@ -549,6 +551,8 @@ namespace FrictionalContact
             result.amg_setups += elastic.amg_setups;
             result.seconds += elastic.seconds;
           }
+        if (fclib_export.wanted(l + 1))
+          fclib_export.write(l + 1, problem, contact, du, r, result.converged);
         if (!result.converged)
           {
             const Residuals &res = result.residuals;

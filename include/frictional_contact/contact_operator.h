@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/contact_map.h>
 #include <frictional_contact/elastic_body.h>
 #include <frictional_contact/friction_cone.h>
 #include <frictional_contact/input.h>
@@ -33,7 +34,7 @@ namespace FrictionalContact
    * communication.
    */
   template <int dim>
-  class ContactOperator
+  class ContactOperator : public ContactMap<dim>
   {
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
@@ -80,14 +81,14 @@ namespace FrictionalContact
 
     /// Number of candidates on this rank.
     unsigned int
-    n_local() const
+    n_local() const override
     {
       return nodes.size();
     }
 
     /// Number of candidates on all ranks (the paper's c).
     types::global_dof_index
-    n_candidates() const
+    n_candidates() const override
     {
       return n_global;
     }
@@ -105,7 +106,7 @@ namespace FrictionalContact
 
     /// T_j^T u: normal part (component 0) and tangential parts of @p u at j.
     Tensor<1, dim>
-    local_part(const unsigned int j, const Vector &u) const
+    local_part(const unsigned int j, const Vector &u) const override
     {
       return to_local(j, nodal_value(j, u));
     }
@@ -130,17 +131,17 @@ namespace FrictionalContact
 
     /// f = T r for the reactions @p r of the local candidates.
     void
-    apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const;
+    apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const override;
 
     /// c_j = t_n,j^T K_jj t_n,j for each local candidate: the stiffness of
     /// node j in the normal direction (force/length), a scale of K that
     /// follows the units of the problem.
     std::vector<double>
-    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const;
+    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const override;
 
     /// The largest singular value of T, computed from the nodal blocks.
     double
-    largest_singular_value() const;
+    largest_singular_value() const override;
 
     /// max_j |T_j^T T_j - I| (0 for orthonormal frames on unfixed nodes).
     double
@@ -190,15 +191,9 @@ namespace FrictionalContact
     to_cartesian(const unsigned int j, const Tensor<1, dim> &v) const;
 
     const FrictionCone<dim> &
-    friction_cone() const
+    friction_cone() const override
     {
       return cone;
-    }
-
-    double
-    friction_coefficient() const
-    {
-      return cone.mu;
     }
 
     /// Bytes held for the candidates (frames, dofs).

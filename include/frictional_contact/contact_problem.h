@@ -3,7 +3,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <frictional_contact/contact_operator.h>
+#include <frictional_contact/contact_map.h>
 
 #include <string>
 #include <vector>
@@ -22,7 +22,7 @@ namespace FrictionalContact
     const TrilinosWrappers::SparseMatrix &stiffness;
     /// p = p^{l+1} - K u^l (zero at fixed dofs).
     const TrilinosWrappers::MPI::Vector &load;
-    const ContactOperator<dim>          &contact;
+    const ContactMap<dim>               &contact;
     /// A length of the increment (largest gap, displacement or elastic
     /// displacement increment) for tolerances that follow the units.
     double length_scale = 1;

@@ -9,6 +9,7 @@
 #include <frictional_contact/checkpoint.h>
 #include <frictional_contact/contact_operator.h>
 #include <frictional_contact/elastic_body.h>
+#include <frictional_contact/fclib_export.h>
 #include <frictional_contact/geometry/interface.h>
 #include <frictional_contact/loading_history.h>
 #include <frictional_contact/material.h>
@@ -120,6 +121,7 @@ namespace FrictionalContact
     std::unique_ptr<ContactSolver<dim>>       contact_solver;
     OutputWriter<dim>                         output;
     StatisticsFile                            statistics;
+    FclibExport                               fclib_export;
     LoadingHistory                            loading;
     std::unique_ptr<TimerOutput>              timer;
 
