@@ -13,6 +13,7 @@ extern "C"
 #include <cmath>
 #include <cstdio>
 #include <fcntl.h>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -112,25 +113,22 @@ namespace FrictionalContact
       return copy;
     }
 
-    /// Whether |A - A^T| <= 1e-10 max |A| entry by entry (duplicates summed).
-    bool
-    symmetric(const std::vector<MatrixEntry> &A)
+    /// max |A - A^T| / max |A| (duplicate entries summed).
+    double
+    asymmetry(const std::vector<MatrixEntry> &A)
     {
       std::map<std::pair<unsigned int, unsigned int>, double> sum;
-      double                                                  largest = 0;
       for (const auto &e : A)
-        {
-          sum[{e.row, e.column}] += e.value;
-          largest = std::max(largest, std::abs(e.value));
-        }
+        sum[{e.row, e.column}] += e.value;
+      double largest = 0, difference = 0;
       for (const auto &[index, value] : sum)
         {
           const auto   mirror = sum.find({index.second, index.first});
           const double other  = mirror == sum.end() ? 0. : mirror->second;
-          if (std::abs(value - other) > 1e-10 * largest)
-            return false;
+          largest             = std::max(largest, std::abs(value));
+          difference          = std::max(difference, std::abs(value - other));
         }
-      return true;
+      return largest > 0 ? difference / largest : 0.;
     }
 
     /// A libfclib matrix (triplets) viewing @p entries.
@@ -238,9 +236,23 @@ namespace FrictionalContact
                      Input::to_text(*std::max_element(problem.mu.begin(),
                                                       problem.mu.end())) +
                      "; one coefficient >= 0 for all contacts is expected");
-    if (!symmetric(problem.M))
-      fail(path, "has a matrix M that is not symmetric; the solvers here "
-                 "need M symmetric positive definite");
+    // Files written in single precision (LMGC90's, say) have M symmetric
+    // to about 1e-7; such an M is replaced by (M + M^T) / 2.
+    problem.asymmetry = asymmetry(problem.M);
+    if (problem.asymmetry > 1e-6)
+      fail(path, "has a matrix M that is not symmetric (max |M - M^T| / "
+                 "max |M| = " + Input::to_text(problem.asymmetry) +
+                 "); the solvers here need M symmetric positive definite");
+    if (problem.asymmetry > 0)
+      {
+        std::vector<MatrixEntry> symmetric;
+        for (const auto &e : problem.M)
+          {
+            symmetric.push_back({e.row, e.column, e.value / 2});
+            symmetric.push_back({e.column, e.row, e.value / 2});
+          }
+        problem.M = std::move(symmetric);
+      }
     if (global->info != nullptr)
       {
         if (global->info->title != nullptr)
@@ -306,6 +318,10 @@ namespace FrictionalContact
 
     const std::string temporary = path + ".part";
     std::remove(temporary.c_str());
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::error_code             ignored;
+    if (!folder.empty())
+      std::filesystem::create_directories(folder, ignored);
     bool written = false;
     {
       QuietStandardError quiet;

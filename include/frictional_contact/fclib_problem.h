@@ -36,6 +36,9 @@ namespace FrictionalContact
     std::vector<double>      mu;
     std::string              title;
     std::string              description;
+    /// max |M - M^T| / max |M| of the file's M, which was replaced by
+    /// (M + M^T) / 2 if this is not zero (read_fclib_problem()).
+    double asymmetry = 0;
 
     unsigned int
     n_contacts() const
@@ -54,8 +57,9 @@ namespace FrictionalContact
 
   /**
    * Reads the global problem of the FCLIB file @p path with libfclib and
-   * checks it: sizes, finite values, a symmetric M, no equality
-   * constraints (G), one friction coefficient. Throws an InputError naming
+   * checks it: sizes, finite values, a symmetric M (up to 1e-6 relative:
+   * the symmetric part is kept), no equality constraints (G), one friction
+   * coefficient. Throws an InputError naming
    * the file and what is wrong.
    */
   FclibProblem
@@ -68,7 +72,7 @@ namespace FrictionalContact
 
   /**
    * Writes @p problem, and @p solution if it is not null, to @p path with
-   * libfclib. The file is written under a temporary name and renamed at the
+   * libfclib (creating its folder if needed). The file is written under a temporary name and renamed at the
    * end, so an existing file is replaced only by a complete one.
    */
   void
