@@ -6,6 +6,7 @@ extern "C"
 {
 #include <fclib.h>
 }
+#include <hdf5.h>
 
 #include <unistd.h>
 
@@ -59,6 +60,25 @@ namespace FrictionalContact
     fail(const std::string &path, const std::string &what)
     {
       throw InputError("the FCLIB file '" + path + "' " + what);
+    }
+
+    /**
+     * Whether @p path is an HDF5 file with the group @p group. libfclib's
+     * readers must only be called then: fclib_read_solution() ends the
+     * process when the file has no solution.
+     */
+    bool
+    has_group(const std::string &path, const std::string &group)
+    {
+      QuietStandardError quiet;
+      if (H5Fis_hdf5(path.c_str()) <= 0)
+        return false;
+      const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+      if (file < 0)
+        return false;
+      const bool found = H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0;
+      H5Fclose(file);
+      return found;
     }
 
     /// The entries of @p matrix, whatever its storage (triplets, CSC, CSR).
@@ -190,6 +210,9 @@ namespace FrictionalContact
     if (access(path.c_str(), R_OK) != 0)
       throw InputError("cannot open the FCLIB file '" + path +
                        "': check the path");
+    if (!has_group(path, "fclib_global"))
+      fail(path, "has no global problem (an HDF5 file with the group "
+                 "fclib_global is expected)");
     std::unique_ptr<fclib_global, void (*)(fclib_global *)> global(
       nullptr, fclib_delete_global);
     {
@@ -271,6 +294,8 @@ namespace FrictionalContact
     if (access(path.c_str(), R_OK) != 0)
       throw InputError("cannot open the FCLIB file '" + path +
                        "': check the path");
+    if (!has_group(path, "solution"))
+      fail(path, "has no solution (group solution with v and r)");
     fclib_solution *stored = nullptr;
     {
       QuietStandardError quiet;

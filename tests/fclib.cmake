@@ -20,3 +20,35 @@ foreach(_ranks 0 2)
   set_tests_properties(${_name} PROPERTIES
     ENVIRONMENT "${_environment}" PROCESSORS ${_processors} TIMEOUT 600)
 endforeach()
+
+# Errors of the --fclib mode (see expect_error.sh).
+set(_data ${CMAKE_CURRENT_SOURCE_DIR}/fclib/data)
+function(fclib_expect_error _name _code _regex)
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/fclib/errors/${_name})
+  file(MAKE_DIRECTORY ${_directory})
+  add_test(NAME fclib/errors/${_name}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_error.sh 0 ${_code} "${_regex}"
+            $<TARGET_FILE:contact> ${ARGN}
+    WORKING_DIRECTORY ${_directory})
+  set_tests_properties(fclib/errors/${_name} PROPERTIES
+    ENVIRONMENT "${_environment}")
+endfunction()
+
+set(_small ${_data}/LMGC_GFC3D-i00001-1-00000.hdf5)
+fclib_expect_error(missing_file 1 "cannot open the FCLIB file 'missing.hdf5'"
+  --fclib missing.hdf5)
+fclib_expect_error(not_an_fclib_file 1 "has no global problem"
+  --fclib ${CMAKE_CURRENT_SOURCE_DIR}/fclib/newton.prm)
+fclib_expect_error(newton 1 "Contact solver/Method.*accelerated primal-dual"
+  --fclib ${_small} ${CMAKE_CURRENT_SOURCE_DIR}/fclib/newton.prm)
+fclib_expect_error(amg 1 "Linear solver/Preconditioner.*jacobi"
+  --fclib ${_small} ${CMAKE_CURRENT_SOURCE_DIR}/fclib/amg.prm)
+fclib_expect_error(no_convergence 2 "no convergence in 10 iterations.*Residuals.*no solution written"
+  --fclib ${_small} --solution not_written.hdf5
+  ${CMAKE_CURRENT_SOURCE_DIR}/fclib/few_iterations.prm)
+fclib_expect_error(evaluate_without_solution 1 "has no solution"
+  --fclib ${_small} --evaluate ${_small})
+fclib_expect_error(solution_without_fclib 1 "go with --fclib"
+  --solution out.hdf5 ${CMAKE_CURRENT_SOURCE_DIR}/fclib/newton.prm)
+fclib_expect_error(bad_export_list 1 "Output/FCLIB export"
+  --fclib-export first ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
