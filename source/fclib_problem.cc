@@ -15,6 +15,7 @@ extern "C"
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -383,23 +384,39 @@ namespace FrictionalContact
 
 
   double
-  fclib_error(const FclibProblem  &problem,
-              const FclibSolution &solution,
-              const std::function<std::vector<double>(const std::vector<double> &)>
-                &solve_M)
+  fclib_error(const FclibProblem &problem, const FclibSolution &solution)
   {
-    // The equilibrium part: v - M^{-1} (f + H r).
-    std::vector<double> b = problem.f;
-    for (const auto &e : problem.H)
-      b[e.row] += e.value * solution.r[e.column];
-    const std::vector<double> v_free = solve_M(b);
-    double                    sum    = 0;
-    for (unsigned int i = 0; i < problem.n; ++i)
-      sum += std::pow(solution.v[i] - v_free[i], 2);
+    const auto norm = [](const std::vector<double> &x) {
+      double sum = 0;
+      for (const double x_i : x)
+        sum += x_i * x_i;
+      return std::sqrt(sum);
+    };
+    // A part is divided by its scale only where that is above the machine
+    // epsilon (a zero problem has an absolute error).
+    const auto relative = [](const double value, const double scale) {
+      return scale > std::numeric_limits<double>::epsilon() ? value / scale :
+                                                              value;
+    };
 
-    // The natural map of each contact, with De Saxce's modified velocity.
+    // Equilibrium: |f + H r - M v| / max(|f|, |M v|, |H r|).
+    std::vector<double> M_v(problem.n, 0.), H_r(problem.n, 0.);
+    for (const auto &e : problem.M)
+      M_v[e.row] += e.value * solution.v[e.column];
+    for (const auto &e : problem.H)
+      H_r[e.row] += e.value * solution.r[e.column];
+    std::vector<double> imbalance = problem.f;
+    for (unsigned int i = 0; i < problem.n; ++i)
+      imbalance[i] += H_r[i] - M_v[i];
+    const double equilibrium =
+      relative(norm(imbalance),
+               std::max({norm(problem.f), norm(M_v), norm(H_r)}));
+
+    // The natural map of each contact, with De Saxce's modified velocity:
+    // |r - P_K(r - u_hat)| / max(|u|, |r|).
     const std::vector<double> u = local_velocity(problem, solution.v);
     const unsigned int        d = problem.spacedim;
+    double                    sum = 0;
     for (unsigned int c = 0; c < problem.n_contacts(); ++c)
       {
         const double *r_c = &solution.r[d * c];
@@ -415,9 +432,8 @@ namespace FrictionalContact
         for (unsigned int k = 0; k < d; ++k)
           sum += std::pow(r_c[k] - s[k], 2);
       }
-    double f_norm = 0;
-    for (const double f_i : problem.f)
-      f_norm += f_i * f_i;
-    return std::sqrt(sum) / (1. + std::sqrt(f_norm));
+    const double complementarity =
+      relative(std::sqrt(sum), std::max(norm(u), norm(solution.r)));
+    return equilibrium + complementarity;
   }
 } // namespace FrictionalContact

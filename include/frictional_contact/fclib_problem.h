@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -85,17 +84,16 @@ namespace FrictionalContact
   local_velocity(const FclibProblem &problem, const std::vector<double> &v);
 
   /**
-   * The error measure of FCLIB's global problems, as Siconos computes it
-   * for its global solvers:
+   * The error measure of a global problem as Siconos 4.4 computes it
+   * (gfc3d_compute_error): the relative force imbalance plus the relative
+   * natural map of FCLIB's local merit function,
    *
-   *   sqrt(|v - M^{-1}(f + H r)|^2
-   *        + sum_c |r_c - P_K(r_c - (u_c + mu |u_t,c| e_n))|^2) / (1 + |f|)
+   *   |f + H r - M v| / max(|f|, |M v|, |H r|)
+   *   + sqrt(sum_c |r_c - P_K(r_c - (u_c + mu |u_t,c| e_n))|^2) / max(|u|, |r|)
    *
-   * with u = H^T v + w recomputed from v. @p solve_M returns M^{-1} b.
+   * with u = H^T v + w recomputed from v (a scale below the machine epsilon
+   * leaves its part absolute). libfclib's own fclib_merit_global() returns 0.
    */
   double
-  fclib_error(const FclibProblem  &problem,
-              const FclibSolution &solution,
-              const std::function<std::vector<double>(const std::vector<double> &)>
-                &solve_M);
+  fclib_error(const FclibProblem &problem, const FclibSolution &solution);
 } // namespace FrictionalContact

@@ -60,17 +60,13 @@ namespace FrictionalContact
     IncrementalProblem<dim>
     incremental_problem() const;
 
-    /// M^{-1} b, for FCLIB's error measure.
-    std::vector<double>
-    solve_M(const std::vector<double> &b);
-
     /// The solution (du, r) in FCLIB's form, on every rank.
     FclibSolution
     to_fclib(const Vector &du, const std::vector<Tensor<1, dim>> &r) const;
 
     /// Prints the residuals of (v, r) and FCLIB's error; returns the error.
     double
-    report(const FclibSolution &solution);
+    report(const FclibSolution &solution) const;
 
     /// x on rank 0 as a Trilinos vector; and back, on every rank.
     Vector
