@@ -158,9 +158,6 @@ namespace FrictionalContact
           << "    n = " << fclib.n << " unknowns, " << fclib.n_contacts()
           << " contacts in " << dim << "D, mu = "
           << Input::to_text(fclib.mu[0]) << std::endl;
-    if (fclib.asymmetry > 0)
-      pcout << "    M is symmetric to " << scientific(fclib.asymmetry)
-            << " (relative); its symmetric part is used" << std::endl;
 
     IncrementalProblem<dim> problem = incremental_problem();
     problem.largest_singular_value_T = contact->largest_singular_value();

@@ -52,3 +52,20 @@ fclib_expect_error(solution_without_fclib 1 "go with --fclib"
   --solution out.hdf5 ${CMAKE_CURRENT_SOURCE_DIR}/fclib/newton.prm)
 fclib_expect_error(bad_export_list 1 "Output/FCLIB export"
   --fclib-export first ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
+fclib_expect_error(not_symmetric 1 "M that is not symmetric"
+  --fclib ${_data}/CubeH8.hdf5)
+
+# FCLIB problems from outside the project (tests/fclib/data/README.md),
+# against Siconos' solutions of the same files.
+foreach(_problem Box_Stacks-i0035-31-0 GFC3D_TwoRods1
+                 LMGC_GFC3D-i00001-1-00000 LMGC_GFC3D-i00501-4-00000)
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/fclib/external/${_problem})
+  file(MAKE_DIRECTORY ${_directory})
+  add_test(NAME fclib/external/${_problem}
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/fclib_external.py
+            $<TARGET_FILE:contact> ${_data}/${_problem}.hdf5
+            ${_data}/${_problem}.siconos.hdf5
+    WORKING_DIRECTORY ${_directory})
+  set_tests_properties(fclib/external/${_problem} PROPERTIES
+    ENVIRONMENT "${_environment}")
+endforeach()

@@ -35,9 +35,6 @@ namespace FrictionalContact
     std::vector<double>      mu;
     std::string              title;
     std::string              description;
-    /// max |M - M^T| / max |M| of the file's M, which was replaced by
-    /// (M + M^T) / 2 if this is not zero (read_fclib_problem()).
-    double asymmetry = 0;
 
     unsigned int
     n_contacts() const
@@ -56,9 +53,8 @@ namespace FrictionalContact
 
   /**
    * Reads the global problem of the FCLIB file @p path with libfclib and
-   * checks it: sizes, finite values, a symmetric M (up to 1e-6 relative:
-   * the symmetric part is kept), no equality constraints (G), one friction
-   * coefficient. Throws an InputError naming
+   * checks it: sizes, finite values, a symmetric M (to 1e-10 relative to
+   * its diagonal), no equality constraints (G), one friction coefficient. Throws an InputError naming
    * the file and what is wrong.
    */
   FclibProblem
