@@ -40,6 +40,26 @@ def guides(axis, ds, t0):
                     label=f"O(d^{power})" if power > 1 else "O(d)")
 
 
+def loglog_by_solver(lines, column):
+    """A new figure with one line per solver: d against point[column]."""
+    figure, axis = plt.subplots(figsize=(6, 4.5))
+    for solver, points in lines.items():
+        axis.loglog([p[0] for p in points], [p[column] for p in points], "o-",
+                    label=LABELS.get(solver, solver))
+    return axis
+
+
+def finish(axis, ylabel, title, file_name,
+           xlabel="d (free displacement dofs)"):
+    axis.set_xlabel(xlabel)
+    axis.set_ylabel(ylabel)
+    axis.set_title(title)
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=8)
+    axis.figure.tight_layout()
+    axis.figure.savefig(file_name, dpi=110)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--csv", default="doc/benchmarks/series.csv")
@@ -52,31 +72,15 @@ def main():
         lines = series(rows, example)
         if not lines:
             continue
-        figure, axis = plt.subplots(figsize=(6, 4.5))
         slowest = max(lines.values(), key=lambda p: p[0][1])
-        for solver, points in lines.items():
-            axis.loglog([p[0] for p in points], [p[1] for p in points], "o-",
-                        label=LABELS.get(solver, solver))
+        axis = loglog_by_solver(lines, 1)
         guides(axis, [p[0] for pts in lines.values() for p in pts], slowest[0][1])
-        axis.set_xlabel("d (free displacement dofs)")
-        axis.set_ylabel("wall time of the contact solve (s)")
-        axis.set_title(f"{title}, mu = 0.5")
-        axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize=8)
-        figure.tight_layout()
-        figure.savefig(os.path.join(args.out, f"example{example}-time.png"), dpi=110)
-
-        figure, axis = plt.subplots(figsize=(6, 4.5))
-        for solver, points in lines.items():
-            axis.loglog([p[0] for p in points], [p[2] for p in points], "o-",
-                        label=LABELS.get(solver, solver))
-        axis.set_xlabel("d (free displacement dofs)")
-        axis.set_ylabel("contact solve time / one elastic solve")
-        axis.set_title(f"{title}: cost in elastic solves")
-        axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize=8)
-        figure.tight_layout()
-        figure.savefig(os.path.join(args.out, f"example{example}-ratio.png"), dpi=110)
+        finish(axis, "wall time of the contact solve (s)", f"{title}, mu = 0.5",
+               os.path.join(args.out, f"example{example}-time.png"))
+        axis = loglog_by_solver(lines, 2)
+        finish(axis, "contact solve time / one elastic solve",
+               f"{title}: cost in elastic solves",
+               os.path.join(args.out, f"example{example}-ratio.png"))
 
     by_mu = defaultdict(dict)
     for row in rows:
@@ -87,13 +91,9 @@ def main():
         for solver, values in by_mu.items():
             mus = sorted(values)
             axis.semilogy(mus, [values[m] for m in mus], "o-", label=LABELS.get(solver, solver))
-        axis.set_xlabel("friction coefficient mu")
-        axis.set_ylabel("wall time of the contact solve (s)")
-        axis.set_title("Example II, N_Y = 20")
-        axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize=8)
-        figure.tight_layout()
-        figure.savefig(os.path.join(args.out, "example2-mu.png"), dpi=110)
+        finish(axis, "wall time of the contact solve (s)", "Example II, N_Y = 20",
+               os.path.join(args.out, "example2-mu.png"),
+               xlabel="friction coefficient mu")
     print(f"plots in {args.out}")
     return 0
 

@@ -155,6 +155,29 @@ namespace FrictionalContact
 
 
   void
+  write_fclib(const MPI_Comm       comm,
+              const std::string   &path,
+              const FclibProblem  &problem,
+              const FclibSolution *solution)
+  {
+    std::string failure;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          write_fclib(path, problem, solution);
+        }
+      catch (const InputError &error)
+        {
+          failure = error.what();
+        }
+    failure = Utilities::MPI::broadcast(comm, failure, 0);
+    if (!failure.empty())
+      throw InputError(failure);
+  }
+
+
+
+  void
   FclibExport::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
@@ -236,23 +259,10 @@ namespace FrictionalContact
     FclibSolution solution;
     if (converged)
       solution = to_fclib(fclib, du, r);
-    // Rank 0 writes; every rank learns whether it worked.
-    const MPI_Comm comm = du.get_mpi_communicator();
-    std::string    failure;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      try
-        {
-          write_fclib(file_name(increment),
-                      fclib,
-                      converged ? &solution : nullptr);
-        }
-      catch (const InputError &error)
-        {
-          failure = error.what();
-        }
-    failure = Utilities::MPI::broadcast(comm, failure, 0);
-    if (!failure.empty())
-      throw InputError(failure);
+    write_fclib(du.get_mpi_communicator(),
+                file_name(increment),
+                fclib,
+                converged ? &solution : nullptr);
   }
 
   template FclibProblem

@@ -57,6 +57,15 @@ namespace FrictionalContact
       int saved;
     };
 
+    double
+    norm(const std::vector<double> &x)
+    {
+      double sum = 0;
+      for (const double x_i : x)
+        sum += x_i * x_i;
+      return std::sqrt(sum);
+    }
+
     [[noreturn]] void
     fail(const std::string &path, const std::string &what)
     {
@@ -387,12 +396,6 @@ namespace FrictionalContact
   double
   fclib_error(const FclibProblem &problem, const FclibSolution &solution)
   {
-    const auto norm = [](const std::vector<double> &x) {
-      double sum = 0;
-      for (const double x_i : x)
-        sum += x_i * x_i;
-      return std::sqrt(sum);
-    };
     // A part is divided by its scale only where that is above the machine
     // epsilon (a zero problem has an absolute error).
     const auto relative = [](const double value, const double scale) {
@@ -436,5 +439,17 @@ namespace FrictionalContact
     const double complementarity =
       relative(std::sqrt(sum), std::max(norm(u), norm(solution.r)));
     return equilibrium + complementarity;
+  }
+
+
+
+  double
+  relative_difference(const std::vector<double> &x, const std::vector<double> &y)
+  {
+    std::vector<double> difference = x;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      difference[i] -= y[i];
+    const double reference = norm(y);
+    return reference > 0 ? norm(difference) / reference : norm(difference);
   }
 } // namespace FrictionalContact

@@ -2,6 +2,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <frictional_contact/fclib_export.h>
 #include <frictional_contact/fclib_solve.h>
 #include <frictional_contact/input.h>
 #include <frictional_contact/plugins.h>
@@ -14,35 +15,6 @@ namespace FrictionalContact
 {
   namespace
   {
-    std::string
-    scientific(const double value)
-    {
-      std::ostringstream out;
-      out << std::scientific << std::setprecision(3) << value;
-      return out.str();
-    }
-
-    double
-    norm(const std::vector<double> &x)
-    {
-      double sum = 0;
-      for (const double x_i : x)
-        sum += x_i * x_i;
-      return std::sqrt(sum);
-    }
-
-    /// |x - y| / |y| (|x - y| if y = 0).
-    double
-    relative_difference(const std::vector<double> &x,
-                        const std::vector<double> &y)
-    {
-      std::vector<double> difference = x;
-      for (unsigned int i = 0; i < x.size(); ++i)
-        difference[i] -= y[i];
-      const double reference = norm(y);
-      return reference > 0 ? norm(difference) / reference : norm(difference);
-    }
-
     /// Problems up to this size get the eigenvalues of M from LAPACK.
     constexpr unsigned int largest_dense_size = 1000;
   } // namespace
@@ -187,14 +159,14 @@ namespace FrictionalContact
                                     lanczos_vectors)
           .value;
     pcout << "    smallest eigenvalue of M = "
-          << scientific(problem.smallest_eigenvalue_K)
+          << Input::scientific(problem.smallest_eigenvalue_K)
           << ", largest singular value of H = "
-          << scientific(problem.largest_singular_value_T) << std::endl;
+          << Input::scientific(problem.largest_singular_value_T) << std::endl;
     if (!(problem.smallest_eigenvalue_K > 0))
       throw InputError("the FCLIB file '" + file_name +
                        "' has a matrix M that is not positive definite "
                        "(smallest eigenvalue " +
-                       scientific(problem.smallest_eigenvalue_K) + ")");
+                       Input::scientific(problem.smallest_eigenvalue_K) + ")");
 
     // The length scale: the largest |w| or free velocity M^{-1} f.
     Vector free_velocity(f);
@@ -226,29 +198,17 @@ namespace FrictionalContact
     pcout << "FCLIB result: method=" << method_name
           << " converged=" << result.converged
           << " iterations=" << result.iterations
-          << " seconds=" << result.seconds << " error=" << scientific(error)
+          << " seconds=" << result.seconds << " error=" << Input::scientific(error)
           << std::endl;
     if (!result.converged)
       throw SolverError(result.failure + ". Residuals: force balance " +
-                        scientific(res.force_balance) + ", complementarity " +
-                        scientific(res.complementarity) + ", penetration " +
-                        scientific(res.penetration) + "; no solution written");
+                        Input::scientific(res.force_balance) + ", complementarity " +
+                        Input::scientific(res.complementarity) + ", penetration " +
+                        Input::scientific(res.penetration) + "; no solution written");
 
     if (!solution_file.empty())
       {
-        std::string failure;
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          try
-            {
-              write_fclib(solution_file, fclib, &solution);
-            }
-          catch (const InputError &error)
-            {
-              failure = error.what();
-            }
-        failure = Utilities::MPI::broadcast(mpi_communicator, failure, 0);
-        if (!failure.empty())
-          throw InputError(failure);
+        write_fclib(mpi_communicator, solution_file, fclib, &solution);
         pcout << "Wrote the problem and its solution to " << solution_file
               << std::endl;
       }
@@ -269,8 +229,8 @@ namespace FrictionalContact
         const FclibSolution reference =
           read_fclib_solution(reference_file, fclib);
         pcout << "Relative difference to the solution in " << reference_file
-              << ": v " << scientific(relative_difference(solution.v, reference.v))
-              << ", r " << scientific(relative_difference(solution.r, reference.r))
+              << ": v " << Input::scientific(relative_difference(solution.v, reference.v))
+              << ", r " << Input::scientific(relative_difference(solution.r, reference.r))
               << std::endl;
       }
   }
@@ -293,10 +253,10 @@ namespace FrictionalContact
     contact->apply(r, T_r);
     const Residuals res = compute_residuals(problem, du, K_du, T_r, r, scratch);
     const double    error = fclib_error(fclib, solution);
-    pcout << "    residuals: force balance " << scientific(res.force_balance)
-          << ", complementarity " << scientific(res.complementarity)
-          << ", penetration " << scientific(res.penetration) << std::endl
-          << "FCLIB error: " << scientific(error) << std::endl;
+    pcout << "    residuals: force balance " << Input::scientific(res.force_balance)
+          << ", complementarity " << Input::scientific(res.complementarity)
+          << ", penetration " << Input::scientific(res.penetration) << std::endl
+          << "FCLIB error: " << Input::scientific(error) << std::endl;
     return error;
   }
 

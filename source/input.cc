@@ -1,5 +1,6 @@
 #include <frictional_contact/input.h>
 
+#include <iomanip>
 #include <sstream>
 
 namespace FrictionalContact
@@ -23,6 +24,16 @@ namespace FrictionalContact
     {
       std::ostringstream stream;
       stream << (value == 0 ? 0. : value); // no "-0"
+      return stream.str();
+    }
+
+
+
+    std::string
+    scientific(const double value, const unsigned int digits)
+    {
+      std::ostringstream stream;
+      stream << std::scientific << std::setprecision(digits) << value;
       return stream.str();
     }
 

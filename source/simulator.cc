@@ -34,14 +34,6 @@ namespace FrictionalContact
     }
 
     std::string
-    scientific(const double value, const unsigned int digits = 3)
-    {
-      std::ostringstream out;
-      out << std::scientific << std::setprecision(digits) << value;
-      return out.str();
-    }
-
-    std::string
     percent(const unsigned int part, const types::global_dof_index whole)
     {
       std::ostringstream out;
@@ -423,9 +415,9 @@ namespace FrictionalContact
                                   eigenvalue_tolerance,
                                   lanczos_vectors);
     mu_pi = eigenvalue.value;
-    pcout << "    mu_pi = " << scientific(mu_pi, 6)
+    pcout << "    mu_pi = " << Input::scientific(mu_pi, 6)
           << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
-          << scientific(eigenvalue.rayleigh_quotient, 6) << ")" << std::endl
+          << Input::scientific(eigenvalue.rayleigh_quotient, 6) << ")" << std::endl
           << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
           << eigenvalue.cg_iterations << " CG iterations" << std::endl;
     return mu_pi;
@@ -559,9 +551,9 @@ namespace FrictionalContact
             throw SolverError(
               "increment " + std::to_string(l + 1) + " (t = " +
               Input::to_text(t) + "): " + result.failure +
-              ". Residuals: force balance " + scientific(res.force_balance) +
-              ", complementarity " + scientific(res.complementarity) +
-              ", penetration " + scientific(res.penetration) +
+              ". Residuals: force balance " + Input::scientific(res.force_balance) +
+              ", complementarity " + Input::scientific(res.complementarity) +
+              ", penetration " + Input::scientific(res.penetration) +
               ". The increments before it are written; this one is not");
           }
         results = contact_results(problem, du, r);
@@ -651,16 +643,16 @@ namespace FrictionalContact
     pcout << "Increment " << l + 1 << "/" << n << ", t = " << Input::to_text(t);
     if (contact.active() && result.iterations == 0)
       pcout << ": nothing touches, the elastic solution (" << result.cg_iterations
-            << " CG iterations); residuals " << scientific(res.force_balance)
-            << ' ' << scientific(res.complementarity) << ' '
-            << scientific(res.penetration) << std::endl;
+            << " CG iterations); residuals " << Input::scientific(res.force_balance)
+            << ' ' << Input::scientific(res.complementarity) << ' '
+            << Input::scientific(res.penetration) << std::endl;
     else if (contact.active())
       pcout << ": " << result.iterations << ' '
             << contact_solver->iteration_name() << " iterations, "
             << result.cg_iterations << " CG iterations, " << result.amg_setups
-            << " AMG set-ups; residuals " << scientific(res.force_balance)
-            << ' ' << scientific(res.complementarity) << ' '
-            << scientific(res.penetration) << "; free/slip/stick " << counts[0]
+            << " AMG set-ups; residuals " << Input::scientific(res.force_balance)
+            << ' ' << Input::scientific(res.complementarity) << ' '
+            << Input::scientific(res.penetration) << "; free/slip/stick " << counts[0]
             << '/' << counts[2] << '/' << counts[1] << std::endl;
     else
       pcout << ": elastic solve, " << result.cg_iterations << " CG iterations ("
@@ -680,16 +672,16 @@ namespace FrictionalContact
         pcout << "State at t = " << Input::to_text(t) << ":" << std::endl;
         if (contact.active())
           pcout << "    residuals: force balance "
-                << scientific(res.force_balance) << ", complementarity "
-                << scientific(res.complementarity) << ", penetration "
-                << scientific(res.penetration) << std::endl
+                << Input::scientific(res.force_balance) << ", complementarity "
+                << Input::scientific(res.complementarity) << ", penetration "
+                << Input::scientific(res.penetration) << std::endl
                 << "    candidates: " << percent(counts[0], c) << " free, "
                 << percent(counts[2], c) << " slip, " << percent(counts[1], c)
                 << " stick (" << counts[0] << " / " << counts[2] << " / "
                 << counts[1] << " of " << c << ")" << std::endl;
         pcout << "    force balance: load " << to_text(load) << " + contact "
               << to_text(contact_force) << " + supports " << to_text(support)
-              << " = " << scientific((load + contact_force + support).norm())
+              << " = " << Input::scientific((load + contact_force + support).norm())
               << std::endl
               << "    max |u| = " << Input::to_text(u.linfty_norm()) << std::endl;
       }

@@ -8,27 +8,8 @@ usage: fclib_round_trip.py <contact> <scene.prm> [--ranks N] [--limit 1e-8]
 Runs in the current folder; the scene writes output-fclib/fclib-00001.hdf5.
 """
 import argparse
-import re
-import subprocess
-import sys
 
-
-def run(command, ranks):
-    if ranks > 0:
-        command = ["mpirun", "-np", str(ranks)] + command
-    print("$", " ".join(command), flush=True)
-    result = subprocess.run(command, capture_output=True, text=True)
-    print(result.stdout + result.stderr, flush=True)
-    if result.returncode != 0:
-        sys.exit(f"*** exit code {result.returncode}")
-    return result.stdout
-
-
-def number(pattern, text):
-    match = re.search(pattern, text)
-    if not match:
-        sys.exit(f"*** no line matching {pattern!r}")
-    return [float(group) for group in match.groups()]
+from fclib_checks import DIFFERENCE, numbers, run, verdict
 
 
 def main():
@@ -48,21 +29,15 @@ def main():
     compared = run([contact, "--fclib", exported, "--evaluate", "imported.hdf5",
                     "--reference", exported], 0)
 
-    checks = [
+    v, r = numbers(DIFFERENCE, compared)
+    verdict([
         ("FCLIB error of the exported solution",
-         number(r"FCLIB error: (\S+)", stored)[0]),
+         numbers(r"FCLIB error: (\S+)", stored)[0], limit),
         ("FCLIB error of the imported problem's solution",
-         number(r"FCLIB error: (\S+)", imported)[0]),
-    ]
-    v, r = number(r"Relative difference to the solution in \S+: v (\S+), r (\S+)",
-                  compared)
-    checks += [("relative difference in v", v), ("relative difference in r", r)]
-    failed = False
-    for name, value in checks:
-        verdict = "ok" if value <= limit else "FAILED"
-        failed |= value > limit
-        print(f"{name}: {value:.3e} (limit {limit:g}) {verdict}")
-    sys.exit(1 if failed else 0)
+         numbers(r"FCLIB error: (\S+)", imported)[0], limit),
+        ("relative difference in v", v, limit),
+        ("relative difference in r", r, limit),
+    ])
 
 
 if __name__ == "__main__":

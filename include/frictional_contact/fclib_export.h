@@ -30,6 +30,16 @@ namespace FrictionalContact
            const std::vector<Tensor<1, dim>>   &r);
 
   /**
+   * write_fclib() on rank 0 of @p comm; if it fails, every rank throws its
+   * InputError. Collective.
+   */
+  void
+  write_fclib(const MPI_Comm       comm,
+              const std::string   &path,
+              const FclibProblem  &problem,
+              const FclibSolution *solution);
+
+  /**
    * Writes the incremental problems of chosen increments to FCLIB files,
    * `<Output directory>/fclib-NNNNN.hdf5`, with the solution when the solve
    * converged. Owns the entry "Output/FCLIB export".

@@ -92,4 +92,8 @@ namespace FrictionalContact
    */
   double
   fclib_error(const FclibProblem &problem, const FclibSolution &solution);
+
+  /// |x - y| / |y| (|x - y| if y = 0), in the Euclidean norm.
+  double
+  relative_difference(const std::vector<double> &x, const std::vector<double> &y);
 } // namespace FrictionalContact

@@ -48,6 +48,10 @@ namespace FrictionalContact
     std::string
     to_text(const double value);
 
+    /// A number in scientific notation with @p digits decimals ("1.234e-05").
+    std::string
+    scientific(const double value, const unsigned int digits = 3);
+
     /// Parses "a, b[, c]" with exactly dim numbers; the error names @p entry.
     template <int dim>
     Tensor<1, dim>
