@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev libfclib-dev cmake g++ make numdiff python3-matplotlib)
+packages=(libdeal.ii-dev libfclib-dev libopenblas0-pthread cmake g++ make python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \

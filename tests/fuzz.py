@@ -4,11 +4,12 @@ either runs or stops with a clear error (exit code 1 or 2 and exactly one
 line "Error: ..."), and that none crashes: no signal, no other exit code,
 no sanitizer report, no stack trace. The mutations (deleted and duplicated
 lines, swapped values, random bytes, huge and negative numbers, unknown
-words) start from the shipped scenes; the random generator is seeded, so a
-failure can be reproduced.
+words) start from the shipped scenes. The seed changes every day (days
+since 1970), so that successive runs of the suite try new cases; it is
+printed first, and --seed repeats a run.
 
 usage: fuzz.py <contact executable> <parameters folder> [--count 200]
-               [--seed 1] [--timeout 20] [--keep-failures DIR]
+               [--seed N] [--timeout 20] [--keep-failures DIR]
 """
 import argparse
 import glob
@@ -18,6 +19,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import time
 
 NUMBERS = ["0", "-1", "1e300", "-1e300", "1e-300", "123456789", "2147483648",
            "nan", "inf", "-0", "1e9", "0.5", "3", "-7.25"]
@@ -67,12 +69,13 @@ def main():
     parser.add_argument("contact")
     parser.add_argument("parameters")
     parser.add_argument("--count", type=int, default=200)
-    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--seed", type=int, default=int(time.time() // 86400))
     parser.add_argument("--timeout", type=float, default=20)
     parser.add_argument("--keep-failures", default=None)
     args = parser.parse_args()
     args.contact = os.path.abspath(args.contact)
 
+    print(f"fuzz: seed {args.seed} (repeat with --seed {args.seed})", flush=True)
     seeds = sorted(glob.glob(os.path.join(args.parameters, "*.prm")))
     rng = random.Random(args.seed)
     counts = {"ran": 0, "clear error": 0, "timeout": 0, "crash": 0}
