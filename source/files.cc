@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <frictional_contact/files.h>
 #include <frictional_contact/input.h>
 
@@ -21,5 +23,58 @@ namespace FrictionalContact
                          "': check <Output directory> and the free disk space");
     }
     std::filesystem::rename(temporary, path);
+  }
+
+
+
+  namespace
+  {
+    /// Empty if a file can be written in @p directory, else why not.
+    std::string
+    why_not_writable(const std::filesystem::path &directory)
+    {
+      // The outermost folder that does not exist yet, to remove again.
+      std::filesystem::path created;
+      for (std::filesystem::path p = directory; !p.empty() && p != p.parent_path();
+           p = p.parent_path())
+        if (!std::filesystem::exists(p))
+          created = p;
+        else
+          break;
+      std::error_code error;
+      std::filesystem::create_directories(directory, error);
+      std::string problem;
+      if (error)
+        problem = "cannot create it (" + error.message() + ")";
+      else
+        {
+          const std::filesystem::path probe = directory / ".write-test";
+          {
+            std::ofstream out(probe);
+            out << "test\n";
+            out.flush();
+            if (!out)
+              problem = "cannot write a file in it";
+          }
+          std::filesystem::remove(probe, error);
+        }
+      if (!created.empty())
+        std::filesystem::remove_all(created, error);
+      return problem;
+    }
+  } // namespace
+
+
+
+  void
+  check_output_directory(const std::string &directory, const MPI_Comm comm)
+  {
+    std::string problem;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      problem = why_not_writable(directory.empty() ? "." : directory);
+    problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw InputError("<Output directory> = '" + directory + "': " + problem +
+                       "; choose a folder where you may write");
   }
 } // namespace FrictionalContact

@@ -54,6 +54,20 @@ namespace FrictionalContact
 
 
     void
+    require_finite(const double value, const std::string &entry, const double t)
+    {
+      if (!std::isfinite(value))
+        throw NonFiniteInput("<" + entry + "> is " +
+                             (std::isnan(value) ? "NaN" : value > 0 ? "+inf" : "-inf") +
+                             " at t = " +
+                             to_text(t) +
+                             "; change it so that it is finite at every time "
+                             "of the loading history");
+    }
+
+
+
+    void
     fail(const std::string &entry,
          const std::string &value,
          const std::string &allowed)

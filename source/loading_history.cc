@@ -8,14 +8,15 @@ namespace FrictionalContact
   TimeFunction::TimeFunction(const std::string &entry,
                              const std::string &expression,
                              const unsigned int n_components)
-    : function(std::make_unique<FunctionParser<1>>(n_components))
+    : entry(entry)
+    , function(std::make_unique<FunctionParser<1>>(n_components))
   {
     try
       {
         function->initialize("x,t", expression, {{"pi", M_PI}}, true);
         // muParser finds most mistakes only when evaluating.
         for (unsigned int c = 0; c < n_components; ++c)
-          value(0., c);
+          function->value(Point<1>(), c);
       }
     catch (const ExceptionBase &)
       {
@@ -36,7 +37,9 @@ namespace FrictionalContact
   TimeFunction::value(const double t, const unsigned int component) const
   {
     function->set_time(t);
-    return function->value(Point<1>(), component);
+    const double result = function->value(Point<1>(), component);
+    Input::require_finite(result, entry, t);
+    return result;
   }
 
 

@@ -282,6 +282,12 @@ main(int argc, char *argv[])
         std::cerr << "Error: the solve failed: " << e.what() << std::endl;
       return 2;
     }
+  catch (const NonFiniteInput &e)
+    {
+      if (is_root)
+        std::cerr << "Error: " << e.what() << std::endl;
+      return 2;
+    }
   catch (const ExceptionBase &e)
     {
       // Errors of deal.II's ParameterHandler name the file, line and entry.

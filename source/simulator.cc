@@ -352,6 +352,9 @@ namespace FrictionalContact
   Simulator<dim>::run()
   {
     setup();
+    if (output.writes_files() || statistics.enabled() || checkpoint_every > 0 ||
+        write_history)
+      check_output_directory(output_directory, mpi_communicator);
     linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
     u = body.make_vector();
     contact_forces.assign(contact.n_local(), Tensor<1, dim>());
@@ -478,6 +481,8 @@ namespace FrictionalContact
     const double t_prev = l > 0 ? times[l - 1] : 0.;
     TrilinosWrappers::MPI::Vector lifting = body.make_vector();
     body.prescribed_increment(t_prev, t, lifting);
+    Input::require_finite(lifting.l2_norm(),
+                          "Boundary conditions/Prescribed displacement", t);
     TrilinosWrappers::MPI::Vector start = u;
     start += lifting;
 
@@ -498,6 +503,11 @@ namespace FrictionalContact
           0., du, load, linear_solver.relative_tolerance() * load.l2_norm());
         result.amg_setups = linear_solver.n_amg_setups - setups_before;
         result.seconds    = wall.wall_time();
+        if (!std::isfinite(du.l2_norm()))
+          throw SolverError("increment " + std::to_string(l + 1) + " (t = " +
+                            Input::to_text(t) +
+                            "): the elastic solve gave a displacement that is "
+                            "not finite");
       }
     if (contact.active())
       {

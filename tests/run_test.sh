@@ -10,9 +10,9 @@
 #        run_test.sh other-blas <N> <expected output> <command> [arguments]
 #
 # 'other-blas' runs the command with the BLAS and LAPACK that are installed
-# but not the system's (reference BLAS or OpenBLAS, chosen through
-# LD_LIBRARY_PATH) and compares the output with the expected output; it
-# exits 77 (skipped) where only one BLAS is installed.
+# but that it would not load otherwise (reference BLAS or OpenBLAS, chosen
+# through LD_LIBRARY_PATH) and compares the output with the expected
+# output; it exits 77 (skipped) where only one BLAS is installed.
 set -u
 mode=$1; ranks=$2; shift 2
 expected=""
@@ -23,7 +23,9 @@ if [ "$mode" = other-blas ]; then
   for d in /usr/lib/*-linux-gnu; do
     [ -e "$d/libblas.so.3" ] && library_dir=$d && break
   done
-  active=$(readlink -f "$library_dir/libblas.so.3" 2>/dev/null)
+  # The BLAS the command would load as things are (the system's, or the
+  # one LD_LIBRARY_PATH already selects), and the other one.
+  active=$(readlink -f "$(ldd "$1" | awk '$1 == "libblas.so.3" {print $3}')" 2>/dev/null)
   case "$active" in
     */openblas*) other="$library_dir/blas:$library_dir/lapack" ;;
     *) other="$library_dir/openblas-pthread" ;;
@@ -34,7 +36,7 @@ if [ "$mode" = other-blas ]; then
   fi
   export LD_LIBRARY_PATH="$other${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   used=$(ldd "$1" | awk '$1 == "libblas.so.3" {print $3}')
-  echo "-- BLAS: $used (the system's is $active)"
+  echo "-- BLAS: $used (without LD_LIBRARY_PATH: $active)"
   case "$used" in
     "${other%%:*}"/*) ;;
     *) echo "*** LD_LIBRARY_PATH=$other did not select the other BLAS"; exit 1 ;;

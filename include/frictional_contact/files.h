@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mpi.h>
+
 #include <string>
 
 namespace FrictionalContact
@@ -11,4 +13,15 @@ namespace FrictionalContact
    */
   void
   write_file_atomically(const std::string &file_name, const std::string &text);
+
+  /**
+   * Checks, before the first solve, that files can be written in
+   * @p directory: rank 0 creates it (with its parents) and writes and
+   * removes a small file in it, then removes again the folders it created,
+   * so that a run that fails later leaves the disk as it was. Every rank of
+   * @p comm throws the same InputError, naming <Output directory>, if that
+   * fails.
+   */
+  void
+  check_output_directory(const std::string &directory, const MPI_Comm comm);
 } // namespace FrictionalContact

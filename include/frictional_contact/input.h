@@ -35,6 +35,18 @@ namespace FrictionalContact
     using std::runtime_error::runtime_error;
   };
 
+  /**
+   * An entry of the input that evaluates to NaN or infinity at a time the
+   * loading history reaches (a load factor 1/(t - 1) at t = 1). Stops the
+   * run with exit code 2 like a SolverError, but is never retried with a
+   * smaller increment: it is not the solver's to fix.
+   */
+  class NonFiniteInput : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   namespace Input
   {
     /// Splits @p text at @p separator and trims each piece; empty pieces are dropped.
@@ -62,6 +74,10 @@ namespace FrictionalContact
     enter_path(ParameterHandler &prm, const std::string &path);
     void
     leave_path(ParameterHandler &prm, const std::string &path);
+
+    /// Throws a NonFiniteInput naming @p entry and @p t unless @p value is finite.
+    void
+    require_finite(const double value, const std::string &entry, const double t);
 
     /// Throws an InputError naming the entry, its value and what is allowed.
     [[noreturn]] void

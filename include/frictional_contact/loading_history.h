@@ -15,7 +15,8 @@ namespace FrictionalContact
   /**
    * A scalar or vector function of time only, from a muParser expression
    * (components separated by ';'). Bad expressions are reported as an
-   * InputError naming @p entry.
+   * InputError naming @p entry, values that are not finite as a
+   * NonFiniteInput naming @p entry and the time.
    */
   class TimeFunction
   {
@@ -28,6 +29,7 @@ namespace FrictionalContact
     value(const double t, const unsigned int component = 0) const;
 
   private:
+    std::string                        entry;
     std::unique_ptr<FunctionParser<1>> function;
   };
   /**
