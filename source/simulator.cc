@@ -12,7 +12,6 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
-#include <csignal>
 #include <fstream>
 #include <cstdlib>
 #include <iomanip>
@@ -285,7 +284,10 @@ namespace FrictionalContact
     {
       TimerOutput::Scope scope(*timer, "Setup");
       if (resume)
-        checkpoint.load_mesh(triangulation);
+        {
+          checkpoint.verify(parameters_as_run);
+          checkpoint.load_mesh(triangulation);
+        }
       else
         {
           const unsigned int refinements =
@@ -754,14 +756,8 @@ namespace FrictionalContact
         write_file_atomically(name.str(), text.str());
       }
 
-    if (checkpoint_every > 0 && (l + 1) % checkpoint_every == 0 && !last)
-      {
-        save_checkpoint(l);
-        // For the restart test: die here, as a killed run would.
-        if (const char *kill = std::getenv("FRICTIONAL_CONTACT_KILL_AFTER_INCREMENT");
-            kill != nullptr && std::atoi(kill) == static_cast<int>(l + 1))
-          std::raise(SIGKILL);
-      }
+    if (checkpoint_every > 0 && ((l + 1) % checkpoint_every == 0 || last))
+      save_checkpoint(l);
   }
 
 
@@ -785,7 +781,8 @@ namespace FrictionalContact
     checkpoint.save(triangulation,
                     body.get_dof_handler(),
                     {&u_ghosted, &forces_ghosted},
-                    state.str());
+                    state.str(),
+                    parameters_as_run);
   }
 
 
@@ -806,10 +803,11 @@ namespace FrictionalContact
     archive >> n_done >> times >> statistics >> output;
     if (n_done >= times.size())
       throw InputError("<Resume computation>: the checkpoint in '" +
-                       checkpoint.path() + "' is after increment " +
-                       std::to_string(n_done) + ", but the loading history "
-                       "has only " + std::to_string(times.size()) +
-                       "; nothing is left to do");
+                       checkpoint.path() + "' is of the last increment (" +
+                       std::to_string(n_done) + " of " +
+                       std::to_string(times.size()) +
+                       "): the run is complete; set Resume computation = "
+                       "false to run it again");
     pcout << "Resuming after increment " << n_done << " (t = "
           << Input::to_text(times[n_done - 1])
           << ") from " << checkpoint.path() << std::endl;

@@ -55,7 +55,7 @@ add_test(NAME patch_test_3d.exact
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
     ${CMAKE_CURRENT_BINARY_DIR}/patch_test_3d.mpirun=2/output-patch_test_3d/displacement-00001.csv
     --exact "ux=0.05*x" "uy=-0.0125*y" "uz=-0.0125*z" --tolerance 1e-8)
-set_tests_properties(patch_test_3d.exact PROPERTIES FIXTURES_REQUIRED patch_test_3d)
+set_tests_properties(patch_test_3d.exact PROPERTIES FIXTURES_REQUIRED patch_test_3d.mpirun=2)
 
 # Loading history: while the floor slides under the body (increments 11 to
 # 16), the tangential contact force is mu = 0.5 times the normal one.

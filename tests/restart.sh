@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Restart test: run the press-and-drag history once without interruption;
-# run it again, killed (SIGKILL) right after the checkpoint of increment 9;
-# resume it on 2 MPI ranks; the resumed run must end where the uninterrupted
-# one did (statistics and contact tables).
+# run it again and kill it (SIGKILL, from outside, at whatever it is doing
+# then, a checkpoint write included) once 4 increments are in its
+# statistics; resume it on 2 MPI ranks and kill that once 12 are; resume it
+# on 3 ranks to the end. The resumed run must end where the uninterrupted
+# one did (statistics and contact tables). Then the checkpoint is damaged
+# and the scene changed, and resuming must refuse both.
 # usage: restart.sh <contact> <source dir> <python3>
 set -u
 contact=$1; source_dir=$2; python=$3
@@ -20,33 +23,61 @@ done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm
 
 fail() { echo "*** $1"; exit 1; }
+rows() {
+  if [ -f out-killed/statistics ]; then grep -c -v '^#' out-killed/statistics; else echo 0; fi
+}
+
+# kill_when <rows> <ranks> <scene>: starts the run and kills it with
+# SIGKILL as soon as its statistics hold <rows> rows.
+kill_when() {
+  local target=$1 ranks=$2 scene=$3
+  if [ "$ranks" -gt 1 ]; then
+    mpirun -np "$ranks" "$contact" "$scene" > "killed-$target.log" 2>&1 &
+  else
+    "$contact" "$scene" > "killed-$target.log" 2>&1 &
+  fi
+  local pid=$!
+  while kill -0 $pid 2>/dev/null && [ "$(rows)" -lt "$target" ]; do sleep 0.01; done
+  kill -0 $pid 2>/dev/null || fail "the run ended before it could be killed"
+  pkill -KILL -P $pid 2>/dev/null; kill -KILL $pid 2>/dev/null
+  wait $pid 2>/dev/null
+  echo "killed after $(rows) rows of statistics on $ranks rank(s)"
+}
+
 "$contact" whole.prm > whole.log 2>&1 || fail "the uninterrupted run failed"
-FRICTIONAL_CONTACT_KILL_AFTER_INCREMENT=9 "$contact" killed.prm > killed.log 2>&1
-code=$?
-[ $code -eq 137 ] || fail "the run to be killed ended with code $code, not 137 (SIGKILL)"
-rows=$(grep -c -v '^#' out-killed/statistics)
-[ "$rows" -eq 9 ] || fail "the killed run's statistics hold $rows rows, expected 9"
-mpirun -np 2 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }
-grep -q "Resuming after increment 9" resume.log || fail "the run did not resume"
+kill_when 4 1 killed.prm
+kill_when 12 2 resume.prm
+grep -q "Resuming after increment" killed-12.log || { cat killed-12.log; fail "the first resume did not resume"; }
+mpirun -np 3 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }
+grep "Resuming after increment" resume.log || fail "the run did not resume"
 
 # Same statistics, apart from wall times and the work of rebuilding the
-# AMG after the restart: time, load, iterations, states and forces to 1e-8
-# relative; the residuals (round-off, 1e-13) to 1e-10 absolute.
+# AMG after the restart: time, load and forces to 1e-6 relative (the solver
+# tolerance 1e-10 times a condition number), contact-solver iterations
+# within max(2, 10 %) and node counts within one node (the resumed solves
+# ran on other rank counts), residuals below 1e-10.
 "$python" - out-whole/statistics out-killed/statistics <<'EOT' || fail "the statistics differ"
 import sys
 def table(path):
     return [[float(x) for x in l.split()] for l in open(path) if not l.startswith("#")]
 a, b = table(sys.argv[1]), table(sys.argv[2])
 ok = len(a) == len(b) == 20
-for c in (1, 2, 3, 6, 13, 14, 15, 16, 17, 18, 10, 11, 12):
-    x, y = [row[c - 1] for row in a], [row[c - 1] for row in b]
-    difference = max(abs(p - q) for p, q in zip(x, y))
-    relative = c not in (10, 11, 12)
-    error = difference / max(max(map(abs, x)), 1e-300) if relative else difference
-    passed = error <= (1e-8 if relative else 1e-10)
+print(f"{len(a)} and {len(b)} rows")
+def check(c, name, limit, measure):
+    global ok
+    error = max(measure(p[c - 1], q[c - 1], [r[c - 1] for r in a]) for p, q in zip(a, b))
+    passed = error <= limit
     ok = ok and passed
-    print(f"statistics column {c}: {'relative' if relative else 'absolute'} "
-          f"difference {error:.1e} {'ok' if passed else 'TOO LARGE'}")
+    print(f"statistics column {c} ({name}): {error:.1e} {'ok' if passed else 'TOO LARGE'}")
+relative = lambda p, q, column: abs(p - q) / max(max(map(abs, column)), 1e-300)
+for c in (1, 2, 3, 16, 17, 18):
+    check(c, "relative difference", 1e-6, relative)
+check(6, "iterations beyond the band", 0,
+      lambda p, q, column: max(0, abs(p - q) - max(2, 0.1 * p)))
+for c in (13, 14, 15):
+    check(c, "nodes", 1, lambda p, q, column: abs(p - q))
+for c in (10, 11, 12):
+    check(c, "largest residual", 1e-10, lambda p, q, column: max(abs(p), abs(q)))
 sys.exit(0 if ok else 1)
 EOT
 "$python" "$source_dir/tests/compare_csv.py" out-whole/contact-00019.csv \
@@ -58,3 +89,28 @@ EOT
 # before and after the restart.
 [ "$(grep -c DataSet out-killed/solution.pvd)" -eq 4 ] || fail "solution.pvd does not list 4 increments"
 echo "the resumed run ends where the uninterrupted one does"
+
+# A finished run's checkpoint is of its last increment: nothing to resume.
+mpirun -np 2 "$contact" resume.prm > finished.log 2>&1
+grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" finished.log || { cat finished.log; fail "resuming a finished run"; }
+
+# The checkpoint refuses another scene, naming the entries that differ.
+printf "include resume.prm\nsubsection Contact\n  set Friction coefficient = 0.3\nend\n" > other.prm
+"$contact" other.prm > other.log 2>&1; code=$?
+grep -q "^Error: .*written for another scene: <Contact/Friction coefficient> was '0.5', is '0.3'" other.log \
+  && [ $code -eq 1 ] || { cat other.log; fail "resuming another scene was not refused"; }
+
+# ... and a damaged file, on 1 and 2 ranks, with the same line.
+for file in mesh_fixed.data mesh state; do
+  cp -r out-killed/checkpoint saved
+  size=$(stat -c %s out-killed/checkpoint/$file)
+  truncate -s $((size / 2)) out-killed/checkpoint/$file
+  for ranks in 1 2; do
+    mpirun -np $ranks "$contact" resume.prm > damaged.log 2>&1; code=$?
+    grep -q "^Error: .*has a damaged file '$file'" damaged.log && [ $code -eq 1 ] \
+      && [ "$(grep -c '^Error' damaged.log)" -eq 1 ] \
+      || { cat damaged.log; fail "a truncated $file was not refused on $ranks rank(s)"; }
+  done
+  rm -rf out-killed/checkpoint; mv saved out-killed/checkpoint
+done
+echo "a checkpoint of another scene and truncated files are refused"

@@ -15,9 +15,12 @@ namespace FrictionalContact
    * The checkpoint of a run after a finished increment, in
    * <output directory>/checkpoint: the refined mesh (p4est), nodal vectors
    * (moved with the cells, so a run may resume on another number of MPI
-   * ranks) and a text blob with the rest of the state. A new checkpoint is
-   * written next to the old one and then put in its place, so a run killed
-   * while writing keeps the previous checkpoint.
+   * ranks), a text blob with the rest of the state, and last a manifest:
+   * the format version, the scene it was written for, and the size and
+   * CRC-32 of every file. A new checkpoint is written next to the old one
+   * and then put in its place, so a run killed while writing keeps the
+   * previous checkpoint; verify() refuses one that is incomplete, damaged,
+   * of another format or of another scene before anything is read.
    */
   template <int dim>
   class Checkpoint
@@ -27,16 +30,28 @@ namespace FrictionalContact
 
     Checkpoint(const std::string &output_directory, const MPI_Comm comm);
 
-    /// Whether a complete checkpoint is there.
+    /// Whether a checkpoint is there (its manifest, written last).
     bool
     exists() const;
 
-    /// Saves the mesh, the @p vectors (with ghost entries) and @p state.
+    /// Saves the mesh, the @p vectors (with ghost entries), @p state and
+    /// the manifest with @p scene (the parameters as run, ShortPRM).
     void
     save(const parallel::distributed::Triangulation<dim> &triangulation,
          const DoFHandler<dim>                           &dof_handler,
          const std::vector<const Vector *>               &vectors,
-         const std::string                               &state) const;
+         const std::string                               &state,
+         const std::string                               &scene) const;
+
+    /**
+     * Checks, before anything is loaded, that the checkpoint is there, of
+     * this format, complete and unchanged (sizes and checksums), and that
+     * it was written for @p scene in every entry that changes the result
+     * (all but the output entries). Every rank throws the same InputError,
+     * naming what is wrong and the entries that differ.
+     */
+    void
+    verify(const std::string &scene) const;
 
     /// Refines the coarse mesh @p triangulation as it was saved.
     void
