@@ -7,6 +7,8 @@
 #include <frictional_contact/input.h>
 #include <frictional_contact/simulator.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -43,23 +45,55 @@ namespace
     "  --help                     this text\n"
     "  --version                  the program's version\n";
 
-  /// The file's text; an InputError if it cannot be read or has CR LF ends.
+  /// The 1-based line of @p position in @p text.
+  std::size_t
+  line_of(const std::string &text, const std::size_t position)
+  {
+    return 1 + std::count(text.begin(), text.begin() + position, '\n');
+  }
+
+
+
+  /**
+   * The file's text; an InputError, naming the file and the fix, if it
+   * cannot be read, is a folder, is empty, is not text, starts with a
+   * byte-order mark or has CR LF ends.
+   */
   std::string
   read_parameter_file(const std::string &file_name)
   {
-    std::ifstream in(file_name);
+    if (std::filesystem::is_directory(file_name))
+      throw InputError("'" + file_name + "' is a folder, not a parameter file; "
+                       "give a .prm file, e.g. parameters/example1.prm");
+    std::ifstream in(file_name, std::ios::binary);
     if (!in)
       throw InputError("cannot open the parameter file '" + file_name +
                        "': check the path");
     std::stringstream text;
     text << in.rdbuf();
     const std::string content = text.str();
+    if (content.find_first_not_of(" \t\r\n") == std::string::npos)
+      throw InputError("the parameter file '" + file_name +
+                       "' is empty; a scene sets at least its geometry, "
+                       "supports and loads: start from parameters/example1.prm");
+    if (content.rfind("\xEF\xBB\xBF", 0) == 0)
+      throw InputError("the parameter file '" + file_name +
+                       "' starts with a UTF-8 byte-order mark; save it "
+                       "without one, e.g. with: sed -i '1s/^\\xEF\\xBB\\xBF//' " +
+                       file_name);
     if (const auto cr = content.find('\r'); cr != std::string::npos)
       throw InputError(
         "the parameter file '" + file_name + "' has Windows line endings "
-        "(CR LF, first on line " +
-        std::to_string(1 + std::count(content.begin(), content.begin() + cr, '\n')) +
+        "(CR LF, first on line " + std::to_string(line_of(content, cr)) +
         "); convert it with: sed -i 's/\\r$//' " + file_name);
+    const auto control = std::find_if(content.begin(), content.end(), [](const char c) {
+      return static_cast<unsigned char>(c) < 32 && c != '\n' && c != '\t';
+    });
+    if (control != content.end())
+      throw InputError("the parameter file '" + file_name +
+                       "' is not text (a control byte on line " +
+                       std::to_string(line_of(content, control - content.begin())) +
+                       "); give a deal.II parameter file (.prm)");
     return content;
   }
 

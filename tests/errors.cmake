@@ -3,6 +3,9 @@
 # exit with that code and that message, once, without a stack trace, and
 # without touching the files in its folder (a 'statistics' file from an
 # earlier run is put there first). A line "# MPI: N" runs it on N ranks.
+# A few are broken on purpose here, from their header: windows_line_endings
+# (CR LF), byte_order_mark, empty_file, random_bytes, folder* (the argument
+# is a folder), missing_file (it does not exist).
 
 file(GLOB _error_scenes ${CMAKE_CURRENT_SOURCE_DIR}/errors/*.prm)
 foreach(_scene ${_error_scenes})
@@ -29,6 +32,18 @@ foreach(_scene ${_error_scenes})
     file(READ ${_scene} _text)
     string(REPLACE "\n" "\r\n" _text "${_text}")
     file(WRITE ${_directory}/${_base}.prm "${_text}")
+  elseif(_base STREQUAL "byte_order_mark")
+    file(READ ${_directory}/${_base}.prm _text)
+    string(ASCII 239 187 191 _mark)
+    file(WRITE ${_directory}/${_base}.prm "${_mark}${_text}")
+  elseif(_base STREQUAL "empty_file")
+    file(WRITE ${_directory}/${_base}.prm "\n  \n")
+  elseif(_base MATCHES "^folder")
+    file(MAKE_DIRECTORY ${_directory}/scene.prm)
+    set(_arguments scene.prm)
+  elseif(_base STREQUAL "random_bytes")
+    string(ASCII 7 200 1 27 255 3 _bytes)
+    file(WRITE ${_directory}/${_base}.prm "set Dimension = 2${_bytes}\n${_bytes}${_bytes}\n")
   endif()
   add_test(NAME errors/${_base}
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_error.sh ${_ranks} ${_code}
