@@ -53,6 +53,28 @@ namespace FrictionalContact
 
 
 
+    std::string
+    one_line(const std::string &text, const std::size_t max_length)
+    {
+      std::string line;
+      bool        space = false;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          space = !line.empty();
+        else
+          {
+            if (space)
+              line += ' ';
+            line += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+            space = false;
+          }
+      if (line.size() > max_length)
+        line = line.substr(0, max_length - 3) + "...";
+      return line;
+    }
+
+
+
     void
     require_finite(const double value, const std::string &entry, const double t)
     {

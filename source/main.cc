@@ -188,25 +188,6 @@ namespace
     else
       fclib.solve(options.solution);
   }
-
-  /// One line: the exception's own message without deal.II's frame.
-  std::string
-  one_line(const std::string &text)
-  {
-    std::string line;
-    bool        space = false;
-    for (const char c : text)
-      if (std::isspace(static_cast<unsigned char>(c)))
-        space = !line.empty();
-      else
-        {
-          if (space)
-            line += ' ';
-          line += c;
-          space = false;
-        }
-    return line;
-  }
 } // namespace
 
 
@@ -329,14 +310,14 @@ main(int argc, char *argv[])
         {
           std::ostringstream info;
           e.print_info(info);
-          std::cerr << "Error: " << one_line(info.str()) << std::endl;
+          std::cerr << "Error: " << Input::one_line(info.str()) << std::endl;
         }
       return 1;
     }
   catch (const std::exception &e)
     {
       if (is_root)
-        std::cerr << "Error: " << one_line(e.what()) << std::endl;
+        std::cerr << "Error: " << Input::one_line(e.what()) << std::endl;
       return 3;
     }
   return 0;

@@ -4,7 +4,8 @@
 # without touching the files in its folder (a 'statistics' file from an
 # earlier run is put there first). A line "# MPI: N" runs it on N ranks.
 # A few are broken on purpose here, from their header: windows_line_endings
-# (CR LF), byte_order_mark, empty_file, random_bytes, folder* (the argument
+# (CR LF), byte_order_mark, empty_file, random_bytes, garbage_mesh (a
+# garbage.msh beside it), folder* (the argument
 # is a folder), missing_file (it does not exist).
 
 file(GLOB _error_scenes ${CMAKE_CURRENT_SOURCE_DIR}/errors/*.prm)
@@ -41,6 +42,10 @@ foreach(_scene ${_error_scenes})
   elseif(_base MATCHES "^folder")
     file(MAKE_DIRECTORY ${_directory}/scene.prm)
     set(_arguments scene.prm)
+  elseif(_base STREQUAL "garbage_mesh")
+    string(ASCII 7 200 1 27 255 3 _bytes)
+    file(WRITE ${_directory}/garbage.msh
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n${_bytes}${_bytes}\n")
   elseif(_base STREQUAL "random_bytes")
     string(ASCII 7 200 1 27 255 3 _bytes)
     file(WRITE ${_directory}/${_base}.prm "set Dimension = 2${_bytes}\n${_bytes}${_bytes}\n")

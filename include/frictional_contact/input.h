@@ -75,6 +75,11 @@ namespace FrictionalContact
     void
     leave_path(ParameterHandler &prm, const std::string &path);
 
+    /// @p text as one line: white space folded, bytes that are not
+    /// printable ASCII shown as '?', at most @p max_length characters.
+    std::string
+    one_line(const std::string &text, const std::size_t max_length = 400);
+
     /// Throws a NonFiniteInput naming @p entry and @p t unless @p value is finite.
     void
     require_finite(const double value, const std::string &entry, const double t);

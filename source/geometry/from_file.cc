@@ -152,24 +152,26 @@ namespace FrictionalContact
     {
       Triangulation<dim> mesh;
       GridIn<dim>        grid_in(mesh);
+      const auto         fail_to_read = [&](const std::string &reason) {
+        Input::fail(entry_path + "Mesh file",
+                    file_name,
+                    "the file is not a mesh deal.II can read as " +
+                      std::to_string(dim) + "D (" + reason + ")");
+      };
       try
         {
           grid_in.read(file_name);
         }
+      catch (const ExceptionBase &error)
+        {
+          // deal.II's own words, without its frame and stack trace.
+          std::ostringstream info;
+          error.print_info(info);
+          fail_to_read(Input::one_line(info.str(), 120));
+        }
       catch (const std::exception &error)
         {
-          // deal.II's message spans lines and starts with a stack trace
-          // header; keep its last non-empty line.
-          std::istringstream text(error.what());
-          std::string        line, reason;
-          while (std::getline(text, line))
-            if (line.find_first_not_of(" \t") != std::string::npos &&
-                line.find("---") == std::string::npos)
-              reason = line.substr(line.find_first_not_of(" \t"));
-          Input::fail(entry_path + "Mesh file",
-                      file_name,
-                      "the file is not a mesh deal.II can read as " +
-                        std::to_string(dim) + "D (" + reason + ")");
+          fail_to_read(Input::one_line(error.what(), 120));
         }
       if (mesh.n_active_cells() == 0)
         Input::fail(entry_path + "Mesh file",
