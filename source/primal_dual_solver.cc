@@ -78,6 +78,11 @@ namespace FrictionalContact
       Input::fail("Contact solver/Accelerated primal-dual/Initial alpha",
                   Input::to_text(initial_alpha),
                   "a positive number is expected");
+    if (!(tolerance > 0))
+      Input::fail("Contact solver/Accelerated primal-dual/Tolerance",
+                  Input::to_text(tolerance),
+                  "a positive number is expected (a step of exactly 0 is "
+                  "never reached in floating point), e.g. 1e-12");
   }
 
 

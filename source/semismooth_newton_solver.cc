@@ -208,6 +208,11 @@ namespace FrictionalContact
     max_iterations   = prm.get_integer("Maximum iterations");
     linear_reduction = prm.get_double("Linear reduction");
     tangential_factor = prm.get_double("Tangential parameter");
+    if (!(tolerance > 0))
+      Input::fail("Contact solver/Semismooth Newton/Tolerance",
+                  Input::to_text(tolerance),
+                  "a positive number is expected (residuals of exactly 0 "
+                  "are never reached in floating point), e.g. 1e-10");
   }
 
 
