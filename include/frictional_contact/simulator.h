@@ -63,6 +63,11 @@ namespace FrictionalContact
     void
     check_memory(const double n_cells) const;
 
+    /// Refines Local refinements times near Refinement center, after
+    /// checking that the estimated mesh fits in memory.
+    void
+    refine_near_center();
+
     /// Solves increment @p l and adds it to the state; returns its statistics.
     SolveStatistics
     solve_increment(const unsigned int l);
