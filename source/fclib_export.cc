@@ -200,7 +200,7 @@ namespace FrictionalContact
     : directory(output_directory)
   {
     prm.enter_subsection("Output");
-    const std::string text = prm.get("FCLIB export");
+    text = prm.get("FCLIB export");
     prm.leave_subsection();
     for (const std::string &item : Input::split(text, ','))
       if (item == "all")
@@ -224,6 +224,19 @@ namespace FrictionalContact
                         "'all'");
           increments.insert(number);
         }
+  }
+
+
+
+  void
+  FclibExport::check_increments(const unsigned int n_increments) const
+  {
+    if (!increments.empty() && *increments.rbegin() > n_increments)
+      Input::fail("Output/FCLIB export",
+                  text,
+                  "increment " + std::to_string(*increments.rbegin()) +
+                    " is past the last increment of the loading history (" +
+                    std::to_string(n_increments) + ")");
   }
 
 

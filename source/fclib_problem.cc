@@ -73,7 +73,8 @@ namespace FrictionalContact
     }
 
     /**
-     * Whether @p path is an HDF5 file with the group @p group. libfclib's
+     * Whether @p path is an HDF5 file with the group (or data set) @p group,
+     * a path whose every parent must exist. libfclib's
      * readers must only be called then: fclib_read_solution() ends the
      * process when the file has no solution.
      */
@@ -236,6 +237,12 @@ namespace FrictionalContact
     if (!has_group(path, "fclib_global"))
       fail(path, "has no global problem (an HDF5 file with the group "
                  "fclib_global is expected)");
+    // libfclib's reader ends the process on a group that lacks one of these.
+    for (const std::string member : {"spacedim", "M", "H", "vectors"})
+      if (!has_group(path, "fclib_global/" + member))
+        fail(path, "has an incomplete global problem: fclib_global/" + member +
+                     " is missing (an FCLIB global problem has M, H, "
+                     "vectors and spacedim)");
     std::unique_ptr<fclib_global, void (*)(fclib_global *)> global(
       nullptr, fclib_delete_global);
     {

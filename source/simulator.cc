@@ -226,6 +226,7 @@ namespace FrictionalContact
     maximum_cuts   = prm.get_integer("Maximum cuts");
     prm.leave_subsection();
     times = loading.increment_times();
+    fclib_export.check_increments(times.size());
     prm.enter_subsection("Output");
     write_history    = prm.get_bool("Write convergence history");
     checkpoint_every = times.size() > 1 ?

@@ -54,6 +54,10 @@ fclib_expect_error(bad_export_list 1 "Output/FCLIB export"
   --fclib-export first ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
 fclib_expect_error(not_symmetric 1 "M that is not symmetric"
   --fclib ${_data}/CubeH8.hdf5)
+fclib_expect_error(empty_global_group 1 "has an incomplete global problem: fclib_global/spacedim is missing"
+  --fclib ${_data}/empty_global_group.hdf5)
+fclib_expect_error(export_past_the_end 1 "<Output/FCLIB export> = '5' is not valid: increment 5 is past the last increment of the loading history \\(1\\)"
+  --fclib-export 5 ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
 
 # FCLIB problems from outside the project (tests/fclib/data/README.md),
 # against Siconos' solutions of the same files.

@@ -52,6 +52,11 @@ namespace FrictionalContact
 
     FclibExport(ParameterHandler &prm, const std::string &output_directory);
 
+    /// Throws an InputError if an increment named is past the last of a
+    /// loading history of @p n_increments.
+    void
+    check_increments(const unsigned int n_increments) const;
+
     /// Whether increment @p increment (counted from 1) is to be written.
     bool
     wanted(const unsigned int increment) const
@@ -76,6 +81,7 @@ namespace FrictionalContact
 
   private:
     std::string            directory;
+    std::string            text;
     bool                   all = false;
     std::set<unsigned int> increments;
   };
