@@ -150,7 +150,12 @@ namespace FrictionalContact
   bool
   Checkpoint<dim>::exists() const
   {
-    return std::filesystem::exists(directory + manifest_file);
+    // Also one killed between the two renames of save(): complete in .new
+    // (its manifest was written before), or still in .old.
+    for (const std::string place : {"", ".new", ".old"})
+      if (std::filesystem::exists(directory + place + manifest_file))
+        return true;
+    return false;
   }
 
 
@@ -164,44 +169,37 @@ namespace FrictionalContact
     const std::string                               &state,
     const std::string                               &scene) const
   {
-    const bool        root      = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string temporary = directory + ".new";
-    if (root)
-      {
-        std::filesystem::remove_all(temporary);
-        std::filesystem::create_directories(temporary);
-      }
-    MPI_Barrier(comm);
+    run_on_root(comm, [&]() {
+      std::filesystem::remove_all(temporary);
+      std::filesystem::create_directories(temporary);
+    });
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     transfer.prepare_for_serialization(vectors);
     triangulation.save(temporary + mesh_file);
-    if (root)
-      write_file_atomically(temporary + state_file, state);
-    MPI_Barrier(comm);
+    run_on_root(comm, [&]() { write_file_atomically(temporary + state_file, state); });
 
-    if (root)
-      {
-        // The manifest last, once every rank has written its part.
-        std::vector<std::string> names;
-        for (const auto &file : std::filesystem::directory_iterator(temporary))
-          names.push_back(file.path().filename().string());
-        std::sort(names.begin(), names.end());
-        std::ostringstream manifest;
-        manifest << format << "\nfiles " << names.size() << '\n';
-        for (const auto &name : names)
-          manifest << name << ' ' << fingerprint(temporary + "/" + name) << '\n';
-        manifest << "scene\n" << scene;
-        write_file_atomically(temporary + manifest_file, manifest.str());
+    run_on_root(comm, [&]() {
+      // The manifest last, once every rank has written its part.
+      std::vector<std::string> names;
+      for (const auto &file : std::filesystem::directory_iterator(temporary))
+        names.push_back(file.path().filename().string());
+      std::sort(names.begin(), names.end());
+      std::ostringstream manifest;
+      manifest << format << "\nfiles " << names.size() << '\n';
+      for (const auto &name : names)
+        manifest << name << ' ' << fingerprint(temporary + "/" + name) << '\n';
+      manifest << "scene\n" << scene;
+      write_file_atomically(temporary + manifest_file, manifest.str());
 
-        const std::string old = directory + ".old";
-        std::filesystem::remove_all(old);
-        if (std::filesystem::exists(directory))
-          std::filesystem::rename(directory, old);
-        std::filesystem::rename(temporary, directory);
-        std::filesystem::remove_all(old);
-      }
-    MPI_Barrier(comm);
+      const std::string old = directory + ".old";
+      std::filesystem::remove_all(old);
+      if (std::filesystem::exists(directory))
+        std::filesystem::rename(directory, old);
+      std::filesystem::rename(temporary, directory);
+      std::filesystem::remove_all(old);
+    });
   }
 
 
@@ -212,7 +210,19 @@ namespace FrictionalContact
   {
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      problem = check(directory, scene);
+      {
+        // A save killed between its two renames left the checkpoint whole
+        // in .new (manifest written) or in .old: put it back in place.
+        std::error_code error;
+        for (const std::string place : {".new", ".old"})
+          if (!std::filesystem::exists(directory + manifest_file) &&
+              std::filesystem::exists(directory + place + manifest_file))
+            {
+              std::filesystem::remove_all(directory, error);
+              std::filesystem::rename(directory + place, directory, error);
+            }
+        problem = check(directory, scene);
+      }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())
       throw InputError("<Resume computation>: the checkpoint in '" + directory +

@@ -67,6 +67,31 @@ namespace FrictionalContact
 
 
   void
+  run_on_root(const MPI_Comm comm, const std::function<void()> &work)
+  {
+    std::string problem;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          work();
+        }
+      catch (const InputError &error)
+        {
+          problem = error.what();
+        }
+      catch (const std::exception &error)
+        {
+          problem = "cannot write the output (" + Input::one_line(error.what()) +
+                    "): check <Output directory> and the free disk space";
+        }
+    problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw InputError(problem);
+  }
+
+
+
+  void
   check_output_directory(const std::string &directory, const MPI_Comm comm)
   {
     std::string problem;

@@ -24,9 +24,8 @@ namespace FrictionalContact
                        const unsigned int              dim,
                        const MPI_Comm                  comm)
     {
+      // Sorted on rank 0 (the others gather nothing), written there.
       const auto all = Utilities::MPI::gather(comm, rows, 0);
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
       std::vector<std::pair<std::vector<double>, const std::string *>> sorted;
       for (const auto &rank_rows : all)
         for (const std::string &row : rank_rows)
@@ -44,7 +43,7 @@ namespace FrictionalContact
       std::string text = header + "\n";
       for (const auto &[key, row] : sorted)
         text += *row + "\n";
-      write_file_atomically(file_name, text);
+      run_on_root(comm, [&]() { write_file_atomically(file_name, text); });
     }
 
     /// The von Mises equivalent stress of the displacement field (in 2D
@@ -181,9 +180,9 @@ namespace FrictionalContact
     if (!vtu_due && !write_csv)
       return;
     const MPI_Comm comm = body.get_mpi_communicator();
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    run_on_root(comm, [&]() {
       std::filesystem::create_directories(directory + "/solution");
-    MPI_Barrier(comm);
+    });
     if (vtu_due)
       write_vtu_files(increment, time, last_increment, body, contact, material, u, results);
     if (write_csv)
@@ -310,12 +309,12 @@ namespace FrictionalContact
 
     times_and_names.emplace_back(time, "solution/" + pvtu);
     // A time series only for a loading history.
-    if (Utilities::MPI::this_mpi_process(comm) == 0 && !(increment == 1 && last_increment))
-      {
+    if (!(increment == 1 && last_increment))
+      run_on_root(comm, [&]() {
         std::ostringstream pvd;
         DataOutBase::write_pvd_record(pvd, times_and_names);
         write_file_atomically(directory + "/solution.pvd", pvd.str());
-      }
+      });
   }
 
 

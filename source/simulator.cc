@@ -751,10 +751,10 @@ namespace FrictionalContact
     TimerOutput::Scope scope(*timer, "Output");
     // The parameters go with the first results, so that a run that fails
     // before leaves an existing output folder as it was.
-    if (l == 0 && (output.writes_files() || statistics.enabled()) &&
-        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      write_file_atomically(output_directory + "/parameters.prm",
-                            parameters_as_run);
+    if (l == 0 && (output.writes_files() || statistics.enabled()))
+      run_on_root(mpi_communicator, [&]() {
+        write_file_atomically(output_directory + "/parameters.prm", parameters_as_run);
+      });
     output.write(l + 1, t, last, body, contact, material, u, results);
 
     statistics.add("Increment", l + 1);
@@ -785,9 +785,8 @@ namespace FrictionalContact
     statistics.add_scientific("Max displacement increment", du.linfty_norm());
     statistics.write();
 
-    if (write_history && !result.history.empty() &&
-        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
+    if (write_history && !result.history.empty())
+      run_on_root(mpi_communicator, [&]() {
         std::ostringstream text;
         text << "# Convergence history of increment " << l + 1 << " (t = " << t
              << "): one row per primal-dual iteration.\n"
@@ -804,7 +803,7 @@ namespace FrictionalContact
         name << output_directory << "/history-" << std::setw(5)
              << std::setfill('0') << l + 1 << ".txt";
         write_file_atomically(name.str(), text.str());
-      }
+      });
 
     if (checkpoint_every > 0 && ((l + 1) % checkpoint_every == 0 || last))
       save_checkpoint(l);

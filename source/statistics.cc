@@ -47,10 +47,12 @@ namespace FrictionalContact
   void
   StatisticsFile::write() const
   {
-    if (!write_file || Utilities::MPI::this_mpi_process(comm) != 0)
+    if (!write_file)
       return;
-    std::ostringstream out;
-    table.write_text(out, TableHandler::table_with_separate_column_description);
-    write_file_atomically(file_name, out.str());
+    run_on_root(comm, [&]() {
+      std::ostringstream out;
+      table.write_text(out, TableHandler::table_with_separate_column_description);
+      write_file_atomically(file_name, out.str());
+    });
   }
 } // namespace FrictionalContact

@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <string>
 
 namespace FrictionalContact
@@ -24,4 +25,13 @@ namespace FrictionalContact
    */
   void
   check_output_directory(const std::string &directory, const MPI_Comm comm);
+
+  /**
+   * Runs @p work (writing files) on rank 0 of @p comm only, and makes its
+   * failure collective: every rank throws the same InputError if it threw
+   * anything, so that no rank waits for one that has stopped. Synchronises
+   * the ranks like a barrier.
+   */
+  void
+  run_on_root(const MPI_Comm comm, const std::function<void()> &work);
 } // namespace FrictionalContact
