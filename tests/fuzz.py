@@ -8,14 +8,21 @@ words) start from the shipped scenes. The seed changes every day (days
 since 1970), so that successive runs of the suite try new cases; it is
 printed first, and --seed repeats a run.
 
+It also damages files the program reads besides the scene (cut short,
+bytes changed, lines deleted or doubled, numbers made huge): the mesh files
+of the scenes that read one (--mesh-count), and the files of a checkpoint
+it then resumes from (--checkpoint-count, the manifest included).
+
 usage: fuzz.py <contact executable> <parameters folder> [--count 200]
-               [--seed N] [--timeout 20] [--keep-failures DIR]
+               [--mesh-count 0] [--checkpoint-count 0] [--seed N]
+               [--timeout 20] [--keep-failures DIR]
 """
 import argparse
 import glob
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -64,65 +71,156 @@ def mutate(lines, rng):
     return lines
 
 
+def corrupt(data, rng):
+    """A damaged copy of a file's bytes: cut short, bytes changed, a line
+    deleted or doubled, or a number made huge."""
+    kind = rng.randrange(5)
+    if kind == 0 or len(data) < 2:
+        return data[:rng.randrange(len(data) + 1)]
+    if kind == 1:
+        data = bytearray(data)
+        for _ in range(rng.randrange(1, 8)):
+            data[rng.randrange(len(data))] = rng.randrange(256)
+        return bytes(data)
+    lines = data.split(b"\n")
+    i = rng.randrange(len(lines))
+    if kind == 2:
+        del lines[i]
+    elif kind == 3:
+        lines.insert(i, lines[i])
+    else:
+        lines[i] = re.sub(rb"\d+", b"99999999999", lines[i], count=1)
+    return b"\n".join(lines)
+
+
+class Runner:
+    """Runs the program on one input and sorts the outcome."""
+
+    def __init__(self, contact, folder, timeout, keep_failures):
+        self.contact, self.folder, self.timeout = contact, folder, timeout
+        self.keep_failures = keep_failures
+        self.counts = {"ran": 0, "clear error": 0, "timeout": 0, "crash": 0}
+        self.environment = dict(
+            os.environ, ASAN_OPTIONS="detect_leaks=0:detect_container_overflow=0",
+            UBSAN_OPTIONS="print_stacktrace=1", OMP_NUM_THREADS="1")
+
+    def run(self, name, text, what):
+        scene = os.path.join(self.folder, f"{name}.prm")
+        with open(scene, "w", encoding="utf-8", errors="replace") as f:
+            f.write(text)
+        try:
+            done = subprocess.run([self.contact, scene], cwd=self.folder,
+                                  capture_output=True, timeout=self.timeout,
+                                  env=self.environment)
+        except subprocess.TimeoutExpired:
+            self.counts["timeout"] += 1
+            return
+        output = (done.stdout + done.stderr).decode("utf-8", errors="replace")
+        errors = sum(1 for l in output.splitlines() if l.startswith("Error: "))
+        report = re.search(r"AddressSanitizer|runtime error:|LeakSanitizer|"
+                           r"[Ss]tack ?trace|terminate called|Aborted|"
+                           r"Segmentation fault", output)
+        if done.returncode == 0 and not report:
+            self.counts["ran"] += 1
+        elif done.returncode in (1, 2) and errors == 1 and not report:
+            self.counts["clear error"] += 1
+        else:
+            self.counts["crash"] += 1
+            print(f"CRASH in {name} ({what}), exit code {done.returncode}:\n"
+                  f"--- input:\n{text}\n--- output:\n{output[-3000:]}")
+            if self.keep_failures:
+                os.makedirs(self.keep_failures, exist_ok=True)
+                shutil.copy(scene, self.keep_failures)
+
+
+def mesh_cases(runner, parameters, count, rng):
+    """The scenes that read a mesh file, each with a damaged copy of it."""
+    scenes = [p for p in sorted(glob.glob(os.path.join(parameters, "*.prm")))
+              if "Mesh file" in open(p, encoding="utf-8").read()]
+    for case in range(count if scenes else 0):
+        scene = rng.choice(scenes)
+        text = open(scene, encoding="utf-8").read()
+        mesh = re.search(r"set Mesh file\s*=\s*(\S+)", text).group(1)
+        source = os.path.join(os.path.dirname(parameters), mesh)
+        target = os.path.join(runner.folder, mesh)
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        with open(source, "rb") as f:
+            damaged = corrupt(f.read(), rng)
+        with open(target, "wb") as f:
+            f.write(damaged)
+        runner.run(f"mesh{case}", "set Output directory = out\n" +
+                   re.sub(r"(?m)^set Output directory.*$", "", text),
+                   f"{os.path.basename(scene)} with a damaged {mesh}")
+        shutil.rmtree(os.path.join(runner.folder, "out"), ignore_errors=True)
+
+
+def checkpoint_cases(runner, parameters, count, rng):
+    """Resumes from a checkpoint with one damaged file (the manifest too)."""
+    scene = ("include " + os.path.join(parameters, "example1.prm") + "\n"
+             "set Output directory = made\nsubsection Loading\n"
+             "  set Number of increments = 2\nend\nsubsection Contact solver\n"
+             "  set Method = semismooth Newton\nend\n")
+    runner.run("checkpoint", scene, "the run that writes the checkpoint")
+    made = os.path.join(runner.folder, "made")
+    if count == 0 or not os.path.isdir(os.path.join(made, "checkpoint")):
+        return
+    resume = scene.replace("made", "out") + "set Resume computation = true\n"
+    for case in range(count):
+        out = os.path.join(runner.folder, "out")
+        shutil.rmtree(out, ignore_errors=True)
+        shutil.copytree(made, out)
+        files = sorted(glob.glob(os.path.join(out, "checkpoint", "*")))
+        damaged = rng.choice(files)
+        with open(damaged, "rb") as f:
+            data = corrupt(f.read(), rng)
+        with open(damaged, "wb") as f:
+            f.write(data)
+        runner.run(f"resume{case}", resume,
+                   f"resume with a damaged {os.path.basename(damaged)}")
+    shutil.rmtree(os.path.join(runner.folder, "out"), ignore_errors=True)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("contact")
     parser.add_argument("parameters")
     parser.add_argument("--count", type=int, default=200)
+    parser.add_argument("--mesh-count", type=int, default=0,
+                        help="damaged mesh files, in the scenes that read one")
+    parser.add_argument("--checkpoint-count", type=int, default=0,
+                        help="resumes from a checkpoint with a damaged file")
     parser.add_argument("--seed", type=int, default=int(time.time() // 86400))
     parser.add_argument("--timeout", type=float, default=20)
     parser.add_argument("--keep-failures", default=None)
     args = parser.parse_args()
     args.contact = os.path.abspath(args.contact)
+    args.parameters = os.path.abspath(args.parameters)
 
     print(f"fuzz: seed {args.seed} (repeat with --seed {args.seed})", flush=True)
     seeds = sorted(glob.glob(os.path.join(args.parameters, "*.prm")))
     rng = random.Random(args.seed)
-    counts = {"ran": 0, "clear error": 0, "timeout": 0, "crash": 0}
-    environment = dict(os.environ,
-                       ASAN_OPTIONS="detect_leaks=0:detect_container_overflow=0",
-                       UBSAN_OPTIONS="print_stacktrace=1", OMP_NUM_THREADS="1")
     with tempfile.TemporaryDirectory() as folder:
+        runner = Runner(args.contact, folder, args.timeout, args.keep_failures)
         for case in range(args.count):
             seed_file = rng.choice(seeds)
             lines = open(seed_file, encoding="utf-8").readlines()
             lines = [l for l in lines if not l.startswith("set Output directory")]
             for _ in range(rng.randrange(1, 4)):
                 lines = mutate(lines, rng)
-            text = "set Output directory = out\n" + "".join(lines)
-            scene = os.path.join(folder, f"case{case}.prm")
-            with open(scene, "w", encoding="utf-8", errors="replace") as f:
-                f.write(text)
-            try:
-                done = subprocess.run([args.contact, scene], cwd=folder,
-                                      capture_output=True, timeout=args.timeout,
-                                      env=environment)
-            except subprocess.TimeoutExpired:
-                counts["timeout"] += 1
-                continue
-            output = (done.stdout + done.stderr).decode("utf-8", errors="replace")
-            errors = sum(1 for l in output.splitlines() if l.startswith("Error: "))
-            report = re.search(r"AddressSanitizer|runtime error:|LeakSanitizer|"
-                               r"[Ss]tack ?trace|terminate called|Aborted|"
-                               r"Segmentation fault", output)
-            if done.returncode == 0 and not report:
-                counts["ran"] += 1
-            elif done.returncode in (1, 2) and errors == 1 and not report:
-                counts["clear error"] += 1
-            else:
-                counts["crash"] += 1
-                print(f"CRASH in case {case} (from {os.path.basename(seed_file)}), "
-                      f"exit code {done.returncode}:\n--- input:\n{text}\n--- output:\n"
-                      f"{output[-3000:]}")
-                if args.keep_failures:
-                    os.makedirs(args.keep_failures, exist_ok=True)
-                    with open(os.path.join(args.keep_failures, f"case{case}.prm"), "w",
-                              encoding="utf-8", errors="replace") as f:
-                        f.write(text)
-            os.system(f"rm -rf {folder}/out")
-    print(f"fuzz: {args.count} mutated parameter files: {counts['ran']} ran, "
-          f"{counts['clear error']} stopped with a clear error, {counts['timeout']} "
-          f"still running after {args.timeout:g} s (stopped), {counts['crash']} crashed")
+            runner.run(f"case{case}", "set Output directory = out\n" + "".join(lines),
+                       f"from {os.path.basename(seed_file)}")
+            shutil.rmtree(os.path.join(folder, "out"), ignore_errors=True)
+        mesh_cases(runner, args.parameters, args.mesh_count, rng)
+        checkpoint_cases(runner, args.parameters, args.checkpoint_count, rng)
+        counts = runner.counts
+    total = args.count + args.mesh_count + args.checkpoint_count + \
+        (1 if args.checkpoint_count else 0)
+    print(f"fuzz: {total} runs ({args.count} mutated parameter files, "
+          f"{args.mesh_count} damaged mesh files, {args.checkpoint_count} damaged "
+          f"checkpoints{' and the run that writes it' if args.checkpoint_count else ''}): "
+          f"{counts['ran']} ran, {counts['clear error']} stopped with "
+          f"a clear error, {counts['timeout']} still running after {args.timeout:g} s "
+          f"(stopped), {counts['crash']} crashed")
     return 1 if counts["crash"] else 0
 
 
