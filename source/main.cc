@@ -2,10 +2,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <frictional_contact/fclib_problem.h>
-#include <frictional_contact/fclib_solve.h>
-#include <frictional_contact/input.h>
-#include <frictional_contact/simulator.h>
+#include <frictional_contact/fclib/fclib_problem.h>
+#include <frictional_contact/fclib/fclib_solve.h>
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/simulator.h>
 
 #include <algorithm>
 #include <filesystem>

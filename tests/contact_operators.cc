@@ -4,7 +4,7 @@
 // any orientation, and each candidate owned by exactly one MPI rank.
 #include <deal.II/base/mpi.h>
 
-#include <frictional_contact/simulator.h>
+#include <frictional_contact/driver/simulator.h>
 
 #include <iostream>
 
@@ -21,7 +21,7 @@ namespace
     prm.parse_input_from_string(scene);
     Simulator<dim> simulator(prm, MPI_COMM_WORLD);
     simulator.setup();
-    const ContactOperator<dim> &contact = simulator.get_contact();
+    const ContactOperator<dim> &contact = simulator.get_model().get_contact();
 
     // Count the candidates again, by ownership: every rank adds its own.
     const auto owned_sum = Utilities::MPI::sum<types::global_dof_index>(
@@ -29,9 +29,9 @@ namespace
     // The candidates expected from the geometry: vertices on the bottom
     // (y = 0 in 2D, z = 0 in 3D) that are not on the clamped face x = 0.
     unsigned int expected_here = 0;
-    const IndexSet &owned = simulator.get_body().locally_owned_dofs();
+    const IndexSet &owned = simulator.get_model().get_body().locally_owned_dofs();
     std::set<types::global_dof_index> seen;
-    for (const auto &cell : simulator.get_body().get_dof_handler().active_cell_iterators())
+    for (const auto &cell : simulator.get_model().get_body().get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           {
@@ -46,7 +46,7 @@ namespace
     const double defect   = contact.orthonormality_defect();
 
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << title << ": d = " << simulator.get_body().n_free_dofs()
+      std::cout << title << ": d = " << simulator.get_model().get_body().n_free_dofs()
                 << ", c = " << contact.n_candidates()
                 << ", candidates owned once: " << std::boolalpha
                 << (owned_sum == contact.n_candidates())

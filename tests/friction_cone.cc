@@ -1,7 +1,7 @@
 // Algorithm 3 (projection onto Coulomb's friction cone) against the
 // properties of a Euclidean projection onto a closed convex cone, and
 // against a brute-force minimiser, on random points.
-#include <frictional_contact/friction_cone.h>
+#include <frictional_contact/solvers/friction_cone.h>
 
 #include <cmath>
 #include <iostream>

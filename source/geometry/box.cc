@@ -1,7 +1,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <frictional_contact/geometry/box.h>
-#include <frictional_contact/plugins.h>
+#include <frictional_contact/base/plugins.h>
 
 namespace FrictionalContact
 {

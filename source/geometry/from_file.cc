@@ -3,7 +3,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <frictional_contact/geometry/from_file.h>
-#include <frictional_contact/plugins.h>
+#include <frictional_contact/base/plugins.h>
 
 #include <fstream>
 #include <set>

@@ -4,7 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <frictional_contact/geometry/half_ball.h>
-#include <frictional_contact/plugins.h>
+#include <frictional_contact/base/plugins.h>
 
 namespace FrictionalContact
 {

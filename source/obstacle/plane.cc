@@ -1,5 +1,5 @@
 #include <frictional_contact/obstacle/plane.h>
-#include <frictional_contact/plugins.h>
+#include <frictional_contact/base/plugins.h>
 
 namespace FrictionalContact
 {

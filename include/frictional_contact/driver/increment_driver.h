@@ -1,0 +1,79 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <frictional_contact/driver/loading_history.h>
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <vector>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * Runs the loading history increment by increment: owns the end times
+   * t_1 < ... < t_n of the increments and the policy for an increment that
+   * fails (abort the run, or retry it as two halves, up to a number of cuts
+   * in a row). Owns the subsection "Loading". It knows nothing of meshes or
+   * solvers: an increment is a function of its number, so that the policy
+   * can be tested alone.
+   */
+  class IncrementDriver
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    explicit IncrementDriver(ParameterHandler &prm);
+
+    /// Solves increment l (from times()[l - 1], or 0, to times()[l]); throws
+    /// a SolverError if it fails.
+    using Increment = std::function<void(const unsigned int l)>;
+
+    /**
+     * Runs increments @p first, first + 1, ... to the end. An increment that
+     * throws a SolverError is retried as two halves, if the policy allows it
+     * (one line on @p out says why), else the error goes on to the caller,
+     * as does any other exception.
+     */
+    void
+    run(const unsigned int first, const Increment &increment, std::ostream &out);
+
+    /// The end times of the increments: those of the loading history, with
+    /// halves inserted where an increment failed and was cut.
+    const std::vector<double> &
+    times() const
+    {
+      return end_times;
+    }
+
+    /// The start time of increment @p l.
+    double
+    start_time(const unsigned int l) const
+    {
+      return l > 0 ? end_times[l - 1] : 0.;
+    }
+
+    /// The times of a checkpoint, which may hold cut increments.
+    void
+    restore_times(std::vector<double> times)
+    {
+      end_times = std::move(times);
+    }
+
+    const LoadingHistory &
+    loading() const
+    {
+      return *history;
+    }
+
+  private:
+    std::unique_ptr<LoadingHistory> history;
+    std::vector<double> end_times;
+    bool                cut_on_failure;
+    unsigned int        maximum_cuts;
+  };
+} // namespace FrictionalContact

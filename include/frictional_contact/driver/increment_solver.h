@@ -1,0 +1,134 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <frictional_contact/model/model.h>
+#include <frictional_contact/model/contact_results.h>
+#include <frictional_contact/solvers/contact_problem.h>
+#include <frictional_contact/solvers/contact_solver_parameters.h>
+#include <frictional_contact/solvers/shifted_stiffness_solver.h>
+
+#include <memory>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /// The state of a run after its last finished increment.
+  template <int dim>
+  struct State
+  {
+    /// The total displacement u^l.
+    TrilinosWrappers::MPI::Vector u;
+    /// The contact force T_j r_j of each local candidate (Cartesian).
+    std::vector<Tensor<1, dim>> contact_forces;
+  };
+
+  /// What solving one increment produced, converged or not.
+  template <int dim>
+  struct IncrementOutcome
+  {
+    /// p = p^{l+1} - K (u^l + the prescribed increment).
+    TrilinosWrappers::MPI::Vector load;
+    /// The contact problem (none without contact).
+    std::unique_ptr<IncrementalProblem<dim>> problem;
+    /// The solution of the problem: du without the prescribed increment,
+    /// and the reactions in the candidates' frames.
+    TrilinosWrappers::MPI::Vector du_solved;
+    std::vector<Tensor<1, dim>>   reactions;
+    /// The whole displacement increment (constraints and prescribed
+    /// displacements included); valid if the solve converged.
+    TrilinosWrappers::MPI::Vector du;
+    ContactResults<dim>           results;
+    SolveStatistics               statistics;
+  };
+
+  /**
+   * Solves one increment on the model: the prescribed displacements, the
+   * load, the elastic pre-solve, the contact problem and the chosen contact
+   * solver. Owns the linear solver of K (and its AMG), the contact solver
+   * and the spectral quantities Algorithm 2 needs (sigma_T, mu_pi, computed
+   * once).
+   */
+  template <int dim>
+  class IncrementSolver
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    IncrementSolver(ParameterHandler         &prm,
+                    const ConditionalOStream &pcout);
+
+    /// Builds the AMG of K and, with contact, sigma_T; prints the method.
+    void
+    initialize(const Model<dim> &model);
+
+    /**
+     * Solves increment number @p increment (counted from 1, for messages)
+     * from @p t_start to @p t_end from @p state, the
+     * obstacle already moved to its position at @p t_end. Throws a
+     * SolverError if the elastic solve fails; a contact solve that does not
+     * converge is reported in the outcome's statistics.
+     */
+    IncrementOutcome<dim>
+    solve(const Model<dim>  &model,
+          const State<dim>  &state,
+          const unsigned int increment,
+          const double      t_start,
+          const double      t_end,
+          const double      load_factor,
+          const bool        record_history,
+          TimerOutput      &timer);
+
+    /// What the contact solver calls its iterations.
+    std::string
+    iteration_name() const
+    {
+      return solver.method->iteration_name();
+    }
+
+    /// The preconditioner of the last linear solve ("AMG", "Jacobi").
+    const std::string &
+    last_preconditioner() const
+    {
+      return linear_solver.last_preconditioner;
+    }
+
+  private:
+    /// mu_pi, computed when the contact iteration first needs it.
+    double
+    smallest_eigenvalue_of_K(const Model<dim> &model, TimerOutput &timer);
+
+    /// The contact problem for the load @p outcome.load, from the
+    /// displacement @p start (u^l and the prescribed increment).
+    std::unique_ptr<IncrementalProblem<dim>>
+    make_problem(const Model<dim>                    &model,
+                 const TrilinosWrappers::MPI::Vector &load,
+                 const TrilinosWrappers::MPI::Vector &start,
+                 const Tensor<1, dim>                &obstacle_motion) const;
+
+    /// Solves the contact problem of @p outcome from the elastic solution
+    /// in outcome.du_solved (if any); @p start is u^l with the prescribed
+    /// increment.
+    void
+    solve_contact(const Model<dim>                    &model,
+                  const State<dim>                    &state,
+                  const TrilinosWrappers::MPI::Vector &start,
+                  IncrementOutcome<dim> &outcome,
+                  const bool             record_history,
+                  TimerOutput           &timer);
+
+    /// Results per candidate for the solution in @p outcome.
+    ContactResults<dim>
+    contact_results(const ContactOperator<dim>  &contact,
+                    const State<dim>            &state,
+                    const IncrementOutcome<dim> &outcome) const;
+
+    const ConditionalOStream    &pcout;
+    ShiftedStiffnessSolver       linear_solver;
+    ContactSolverParameters<dim> solver;
+    double                       sigma_T = 1;
+    double                       mu_pi   = 0;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * A scalar or vector function of time only, from a muParser expression
+   * (components separated by ';'). Bad expressions are reported as an
+   * InputError naming @p entry, values that are not finite as a
+   * NonFiniteInput naming @p entry and the time.
+   */
+  class TimeFunction
+  {
+  public:
+    TimeFunction(const std::string &entry,
+                 const std::string &expression,
+                 const unsigned int n_components);
+
+    double
+    value(const double t, const unsigned int component = 0) const;
+
+  private:
+    std::string                        entry;
+    std::unique_ptr<FunctionParser<1>> function;
+  };
+  /**
+   * The loading history: the times t_1 < ... < t_n that end the increments
+   * (a uniform division of [0, End time], or an explicit list) and the load
+   * factor lambda(t) that scales all loads (tractions and body force),
+   * given as a muParser expression of t or as a piecewise-linear table.
+   */
+  class LoadingHistory
+  {
+  public:
+    /// Declares the entries of the times and the load factor, inside the
+    /// subsection "Loading" (which IncrementDriver owns).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads them, inside the subsection "Loading".
+    explicit LoadingHistory(ParameterHandler &prm);
+
+    /// End times of the increments, increasing, all > 0.
+    const std::vector<double> &
+    increment_times() const
+    {
+      return times;
+    }
+
+    double
+    load_factor(const double t) const;
+
+    /// "10 increments to t = 4, load factor: t"
+    std::string
+    describe() const;
+
+  private:
+    std::vector<double>                      times;
+    std::string                              factor_text;
+    std::unique_ptr<TimeFunction>            factor_function;
+    std::vector<std::pair<double, double>>   factor_table;
+  };
+
+} // namespace FrictionalContact

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <frictional_contact/driver/checkpoint.h>
+#include <frictional_contact/driver/increment_driver.h>
+#include <frictional_contact/driver/increment_solver.h>
+#include <frictional_contact/model/model.h>
+#include <frictional_contact/postprocess/manager.h>
+
+#include <memory>
+
+namespace FrictionalContact
+{
+  /**
+   * One run of a scene, the pipeline of doc/pipeline.md: the Model (mesh,
+   * body, contact), the IncrementDriver (times, step cutting), the
+   * IncrementSolver (one increment on the model) and the postprocessors,
+   * with the run's state (u and the contact forces) and its checkpoints.
+   * Owns the top-level entries. All parameters are read (and checked) in
+   * the constructor, before anything is computed or written.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    Simulator(ParameterHandler &prm, const MPI_Comm comm);
+
+    /// Sets up, solves and writes the results. Throws SolverError on failure.
+    void
+    run();
+
+    /// Builds the mesh, dofs, constraints, contact candidates, K and p.
+    void
+    setup();
+
+    const Model<dim> &
+    get_model() const
+    {
+      return model;
+    }
+
+  private:
+    /// Solves increment @p l, adds it to the state and runs the
+    /// postprocessors; throws a SolverError if it fails.
+    void
+    solve_increment(const unsigned int l);
+
+    /// Writes a checkpoint after increment @p l.
+    void
+    save_checkpoint(const unsigned int l) const;
+
+    /// Restores the state saved by save_checkpoint(); returns the number of
+    /// increments done.
+    unsigned int
+    load_checkpoint();
+
+    /// The one-line summary for scripts: seconds per section, peak memory.
+    void
+    print_summary() const;
+
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
+    std::string        output_directory;
+    /// The parameters as read, written next to the results and kept in
+    /// checkpoints to compare scenes.
+    std::string parameters_as_run;
+    bool        resume;
+
+    Model<dim>                   model;
+    IncrementDriver              driver;
+    IncrementSolver<dim>         increment_solver;
+    Postprocess::Manager<dim>    postprocessors;
+    Checkpoint<dim>              checkpoint;
+    std::unique_ptr<TimerOutput> timer;
+
+    State<dim> state;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,88 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <frictional_contact/solvers/contact_solver_parameters.h>
+#include <frictional_contact/fclib/fclib_problem.h>
+#include <frictional_contact/solvers/shifted_stiffness_solver.h>
+#include <frictional_contact/solvers/sparse_contact_map.h>
+
+#include <memory>
+#include <string>
+
+namespace FrictionalContact
+{
+  /**
+   * The program's --fclib mode: an FCLIB global problem as one incremental
+   * problem for our contact solvers (doc/fclib.md). Owns the problem (every
+   * rank has the file's arrays; rank 0 holds the matrices and all
+   * contacts), M in Trilinos format, the sparse T, and the solvers chosen
+   * in the parameter file. Prints the paper's three residuals and FCLIB's
+   * error measure.
+   */
+  template <int dim>
+  class FclibSolve
+  {
+  public:
+    /// Entries that differ from a scene's defaults in this mode: the
+    /// accelerated primal-dual method, Jacobi-preconditioned CG.
+    static void
+    set_defaults(ParameterHandler &prm);
+
+    FclibSolve(ParameterHandler  &prm,
+               FclibProblem       problem,
+               const std::string &file_name,
+               const MPI_Comm     comm);
+
+    /**
+     * Solves from v = 0, r = 0 and reports. Writes the problem with its
+     * solution to @p solution_file (if not empty). Throws a SolverError if
+     * the solve does not converge.
+     */
+    void
+    solve(const std::string &solution_file);
+
+    /**
+     * Reports the residuals and FCLIB's error measure of the solution
+     * stored in @p solution_file, and its relative difference to the one
+     * in @p reference_file (if not empty).
+     */
+    void
+    evaluate(const std::string &solution_file,
+             const std::string &reference_file);
+
+  private:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /// Our form of the problem (T = H with the normal column negated).
+    IncrementalProblem<dim>
+    incremental_problem() const;
+
+    /// The solution (du, r) in FCLIB's form, on every rank.
+    FclibSolution
+    to_fclib(const Vector &du, const std::vector<Tensor<1, dim>> &r) const;
+
+    /// Prints the residuals of (v, r) and FCLIB's error; returns the error.
+    double
+    report(const FclibSolution &solution) const;
+
+    /// x on rank 0 as a Trilinos vector; and back, on every rank.
+    Vector
+    to_vector(const std::vector<double> &x) const;
+    std::vector<double>
+    to_std(const Vector &x) const;
+
+    MPI_Comm                            mpi_communicator;
+    ConditionalOStream                  pcout;
+    FclibProblem                        fclib;
+    std::string                         file_name;
+    IndexSet                            owned;
+    TrilinosWrappers::SparseMatrix      M;
+    Vector                              f;
+    std::unique_ptr<SparseContactMap<dim>> contact;
+    ShiftedStiffnessSolver              linear_solver;
+    ContactSolverParameters<dim>        solver;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,243 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/solvers/contact_map.h>
+#include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/solvers/friction_cone.h>
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/loading_history.h>
+#include <frictional_contact/obstacle/interface.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The contact candidate nodes of this MPI rank and the paper's operators
+   * on them. For candidate j (a vertex on a contact boundary that is not
+   * fully fixed), the column block T_j = [t_n,j, T_t,j] of T maps the
+   * local reaction r_j = (r_n, r_t) to nodal forces, and T_j^T maps a
+   * displacement to its normal and tangential parts at the node. t_n,j is
+   * the unit vector pointing into the obstacle (minus the obstacle's outward
+   * normal), so that the gap after a displacement du is g_j - t_n,j^T du;
+   * T_t,j holds dim-1 orthonormal tangents. Components held by a fixed
+   * boundary are left out of T_j (they are not unknowns).
+   *
+   * Each candidate is owned by the rank owning its dofs, and only that rank
+   * stores it: T and T^T act on locally owned vector entries only, without
+   * communication.
+   */
+  template <int dim>
+  class ContactOperator : public ContactMap<dim>
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads the subsection "Contact" and creates the obstacle.
+    ContactOperator(ParameterHandler &prm, const BoundaryNames &names);
+
+    /// Whether the scene has a contact boundary at all.
+    bool
+    active() const
+    {
+      return !contact_boundaries.empty();
+    }
+
+    /**
+     * Finds the candidates of @p body on the contact boundaries and builds
+     * their frames for the obstacle at its initial position. Throws an
+     * InputError if a contact boundary has no candidate.
+     */
+    void
+    setup(const ElasticBody<dim> &body, const BoundaryNames &names);
+
+    /// The obstacle's prescribed rigid displacement at time @p t.
+    Tensor<1, dim>
+    obstacle_displacement(const double t) const;
+
+    /**
+     * Moves the obstacle rigidly by @p displacement (from its position in
+     * the parameter file) and rebuilds the frames there: the normal of
+     * candidate j is the obstacle's at x_j - displacement.
+     */
+    void
+    move_obstacle(const Tensor<1, dim> &displacement);
+
+    /// Signed distance from the reference position of j to the obstacle.
+    double
+    reference_gap(const unsigned int j) const
+    {
+      return obstacle->signed_distance(nodes[j].position - obstacle_shift);
+    }
+
+    /// Number of candidates on this rank.
+    unsigned int
+    n_local() const override
+    {
+      return nodes.size();
+    }
+
+    /// Number of candidates on all ranks (the paper's c).
+    types::global_dof_index
+    n_candidates() const override
+    {
+      return n_global;
+    }
+
+    /// The Cartesian components of the (non-ghosted) vector @p u at node j.
+    Tensor<1, dim>
+    nodal_value(const unsigned int j, const Vector &u) const
+    {
+      const double  *values = u.begin();
+      Tensor<1, dim> u_j;
+      for (unsigned int c = 0; c < dim; ++c)
+        u_j[c] = values[nodes[j].local_dofs[c]];
+      return u_j;
+    }
+
+    /// T_j^T u: normal part (component 0) and tangential parts of @p u at j.
+    Tensor<1, dim>
+    local_part(const unsigned int j, const Vector &u) const override
+    {
+      return to_local(j, nodal_value(j, u));
+    }
+
+    /// (t_n^T v, t_1^T v, ...) for a Cartesian vector @p v at node j; the
+    /// components held by fixed boundaries are ignored.
+    Tensor<1, dim>
+    to_local(const unsigned int j, Tensor<1, dim> v) const;
+
+    /// Adds the Cartesian vector @p value to the entries of node j in @p f.
+    void
+    add_nodal_value(const unsigned int j, const Tensor<1, dim> &value, Vector &f) const
+    {
+      double *entries = f.begin();
+      for (unsigned int c = 0; c < dim; ++c)
+        entries[nodes[j].local_dofs[c]] += value[c];
+    }
+
+    /// f = the Cartesian nodal @p values at the candidates, zero elsewhere.
+    void
+    set_nodal_values(const std::vector<Tensor<1, dim>> &values, Vector &f) const;
+
+    /// f = T r for the reactions @p r of the local candidates.
+    void
+    apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const override;
+
+    /// f += T_j r_j.
+    void
+    add_reaction(const unsigned int    j,
+                 const Tensor<1, dim> &r_j,
+                 Vector               &f) const override
+    {
+      add_nodal_value(j, to_cartesian(j, r_j), f);
+    }
+
+    /// c_j = t_n,j^T K_jj t_n,j for each local candidate: the stiffness of
+    /// node j in the normal direction (force/length), a scale of K that
+    /// follows the units of the problem.
+    std::vector<double>
+    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const override;
+
+    /// The largest singular value of T, computed from the nodal blocks.
+    double
+    largest_singular_value() const override;
+
+    /// max_j |T_j^T T_j - I| (0 for orthonormal frames on unfixed nodes).
+    double
+    orthonormality_defect() const;
+
+    /// Global index of the x-displacement dof of candidate j.
+    types::global_dof_index
+    first_dof(const unsigned int j) const
+    {
+      return nodes[j].dofs[0];
+    }
+
+    /// Global index of displacement component @p c of candidate j.
+    types::global_dof_index
+    dof(const unsigned int j, const unsigned int c) const
+    {
+      return nodes[j].dofs[c];
+    }
+
+    /// Signed distance from @p point to the obstacle (> 0 outside).
+    double
+    distance_to_obstacle(const Point<dim> &point) const
+    {
+      return obstacle->signed_distance(point);
+    }
+
+    /// Reference position of candidate j.
+    const Point<dim> &
+    position(const unsigned int j) const
+    {
+      return nodes[j].position;
+    }
+
+    /**
+     * The lumped area of candidate j (length in 2D): the integral over the
+     * contact boundary faces of the node's Q1 shape function. The contact
+     * pressure of the node is its normal reaction divided by this area.
+     */
+    double
+    nodal_area(const unsigned int j) const
+    {
+      return nodes[j].area;
+    }
+
+    /// The vector x with components x_c = sum_k T_j(c,k) v_k at node j.
+    Tensor<1, dim>
+    to_cartesian(const unsigned int j, const Tensor<1, dim> &v) const;
+
+    const FrictionCone<dim> &
+    friction_cone() const override
+    {
+      return cone;
+    }
+
+    /// Bytes held for the candidates (frames, dofs).
+    std::size_t
+    memory_consumption() const;
+
+    /// "bottom" or "bottom, top"
+    std::string
+    describe_boundaries(const BoundaryNames &names) const;
+
+  private:
+    struct Node
+    {
+      Point<dim> position;
+      /// Global indices of the displacement components.
+      std::array<types::global_dof_index, dim> dofs;
+      /// Index of each displacement component in the locally owned range.
+      std::array<unsigned int, dim> local_dofs;
+      /// Whether the component is an unknown (not held by a fixed boundary).
+      std::array<bool, dim> free;
+      /// t_n,j: unit vector pointing into the obstacle.
+      Tensor<1, dim> into_obstacle;
+      /// Lumped area on the contact boundaries (see nodal_area()).
+      double area = 0;
+    };
+
+    FrictionCone<dim>                            cone;
+    std::set<types::boundary_id>                 contact_boundaries;
+    std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
+    std::vector<Node>                            nodes;
+    /// T_t,j; empty without friction (the tangential operator is not needed).
+    std::vector<std::array<Tensor<1, dim>, dim - 1>> tangents;
+    std::unique_ptr<TimeFunction>                rigid_displacement;
+    Tensor<1, dim>                               obstacle_shift;
+    types::global_dof_index                      n_global = 0;
+    MPI_Comm                                     mpi_communicator = MPI_COMM_WORLD;
+  };
+} // namespace FrictionalContact

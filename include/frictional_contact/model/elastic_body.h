@@ -1,0 +1,196 @@
+#pragma once
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/model/boundary_conditions.h>
+#include <frictional_contact/model/material.h>
+
+#include <array>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The discretised elastic body: Q1 displacement field on a distributed
+   * mesh, its zero-displacement constraints, the stiffness matrix K and the
+   * load vector p of the reference load (load factor 1). Also evaluates the
+   * support reactions for a given displacement.
+   */
+  template <int dim>
+  class ElasticBody
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    ElasticBody(const parallel::distributed::Triangulation<dim> &triangulation,
+                const LinearElasticMaterial<dim>                &material,
+                const BoundaryConditions<dim>                   &conditions);
+
+    /// Distributes the dofs, builds the constraints and the sparsity pattern.
+    void
+    setup();
+
+    /// Assembles K and p. Call after setup().
+    void
+    assemble();
+
+    /**
+     * Throws an InputError unless the fixed boundaries hold the body against
+     * every rigid-body motion (translations and rotations).
+     */
+    void
+    check_rigid_body_motion_is_prevented() const;
+
+    /**
+     * The internal force K u at the unconstrained dofs (zero at the
+     * others), for a displacement @p u that may be non-zero on prescribed
+     * boundaries: the condensed stiffness matrix alone would miss their
+     * coupling to the free dofs.
+     */
+    void
+    internal_force(const Vector &u, Vector &force) const;
+
+    /**
+     * The sum of the support reactions (forces the supports exert on the
+     * body) for the displacement @p u (with ghost entries) under the load
+     * factor @p load_factor: the unconstrained residual K u - p at the
+     * constrained dofs, summed per component.
+     */
+    Tensor<1, dim>
+    support_reaction(const Vector &u, const double load_factor) const;
+
+    /**
+     * The increment of the prescribed displacements from time @p t_old to
+     * @p t_new, at the prescribed dofs, zero elsewhere (the lifting of an
+     * increment; the solves then work with homogeneous constraints).
+     */
+    void
+    prescribed_increment(const double t_old,
+                         const double t_new,
+                         Vector      &increment) const;
+
+    /// The total applied force (tractions and body force) for load factor 1.
+    const Tensor<1, dim> &
+    total_load() const
+    {
+      return reference_total_load;
+    }
+
+    /**
+     * Rigid-body modes (dim(dim+1)/2 of them: translations, then rotations)
+     * at the locally owned dofs, for the AMG's near null space.
+     */
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+
+    /// Number of displacement dofs that are not fixed (the paper's d).
+    types::global_dof_index
+    n_free_dofs() const
+    {
+      return n_free;
+    }
+
+    Vector
+    make_vector() const
+    {
+      return Vector(owned_dofs, mpi_communicator);
+    }
+
+    Vector
+    make_ghosted_vector() const
+    {
+      return Vector(owned_dofs, relevant_dofs, mpi_communicator);
+    }
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    const TrilinosWrappers::SparseMatrix &
+    stiffness_matrix() const
+    {
+      return stiffness;
+    }
+
+    const Vector &
+    load_vector() const
+    {
+      return load;
+    }
+
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+
+    MPI_Comm
+    get_mpi_communicator() const
+    {
+      return mpi_communicator;
+    }
+
+    /// Whether dof @p i is held by a fixed boundary (not a hanging node).
+    bool
+    is_fixed(const types::global_dof_index i) const
+    {
+      return constraints.is_constrained(i) &&
+             constraints.get_constraint_entries(i)->empty();
+    }
+
+  private:
+    /// Element stiffness matrix and load vector (load factor 1) of @p cell.
+    /**
+     * force = sum over the locally owned cells of K_e u_e - load_factor p_e,
+     * distributed with @p distribute (all constraints, or only the
+     * hanging-node ones). @p u_ghosted must have ghost entries.
+     */
+    void
+    element_forces(const Vector                    &u_ghosted,
+                   const double                     load_factor,
+                   const AffineConstraints<double> &distribute,
+                   Vector                          &force) const;
+
+    void
+    assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  FEValues<dim>          &fe_values,
+                  FEFaceValues<dim>      &fe_face_values,
+                  FullMatrix<double>     &cell_matrix,
+                  dealii::Vector<double> &cell_load) const;
+
+    const LinearElasticMaterial<dim> &material;
+    const BoundaryConditions<dim>    &conditions;
+    MPI_Comm                          mpi_communicator;
+
+    FESystem<dim>   fe;
+    DoFHandler<dim> dof_handler;
+    IndexSet        owned_dofs;
+    IndexSet        relevant_dofs;
+    /// The locally owned dofs of each displacement component.
+    std::array<IndexSet, dim> component_dofs;
+
+    AffineConstraints<double>      constraints;
+    /// Only the hanging-node part of constraints (for support reactions).
+    AffineConstraints<double>      hanging_node_constraints;
+    /// Locally owned dofs of prescribed (not fixed) boundaries.
+    IndexSet                       prescribed_dofs;
+    TrilinosWrappers::SparseMatrix stiffness;
+    Vector                         load;
+    Tensor<1, dim>                 reference_total_load;
+    types::global_dof_index        n_free = 0;
+  };
+} // namespace FrictionalContact

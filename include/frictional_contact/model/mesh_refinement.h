@@ -1,0 +1,53 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * The refinement of the geometry's coarse mesh: global refinements, then
+   * local ones near a centre (hanging nodes between the levels). Owns the
+   * refinement entries of "Geometry" and the memory check that refuses a
+   * mesh this machine cannot hold before it is made.
+   */
+  template <int dim>
+  class MeshRefinement
+  {
+  public:
+    /// Declares the refinement entries, inside the subsection "Geometry".
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads them, inside the subsection "Geometry".
+    explicit MeshRefinement(ParameterHandler &prm);
+
+    /// Refines @p mesh globally (after @p built_in_refinements the geometry
+    /// asks for), then near the centre; throws an InputError, before
+    /// refining, if the estimated mesh would not fit in memory.
+    void
+    refine(parallel::distributed::Triangulation<dim> &mesh,
+           const unsigned int                         built_in_refinements) const;
+
+  private:
+    /// Throws an InputError if a mesh of @p n_cells cells would not fit in
+    /// the memory of this machine.
+    void
+    check_memory(const double n_cells, const MPI_Comm comm) const;
+
+    /// Refines Local refinements times near Refinement center, after
+    /// checking that the estimated mesh fits in memory.
+    void
+    refine_near_center(parallel::distributed::Triangulation<dim> &mesh) const;
+
+    unsigned int global_refinements;
+    /// Cells within local_radius of local_center are split local_refinements
+    /// more times.
+    unsigned int local_refinements;
+    Point<dim>   local_center;
+    double       local_radius;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/geometry/interface.h>
+#include <frictional_contact/model/boundary_conditions.h>
+#include <frictional_contact/model/contact_operator.h>
+#include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/model/material.h>
+#include <frictional_contact/model/mesh_refinement.h>
+
+#include <functional>
+#include <memory>
+
+namespace FrictionalContact
+{
+  /**
+   * The scene as a parameter file describes it: the mesh of the geometry
+   * (refined), the material, the boundary conditions, the elastic body
+   * (dofs, K, loads) and the contact candidates facing the obstacle. Owns
+   * the subsection "Geometry"; the others are read by the classes named
+   * after them. The constructor reads every entry and makes the coarse
+   * mesh; setup() refines it (or loads a saved one) and builds the rest.
+   */
+  template <int dim>
+  class Model
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    Model(ParameterHandler &prm, const MPI_Comm comm);
+
+    /**
+     * Makes the mesh, by refining the coarse one or, if @p load_mesh is
+     * given, by letting it replace the mesh (a checkpoint's); then the dofs,
+     * constraints and contact candidates. Throws an InputError if a rank
+     * would own no unknowns.
+     */
+    void
+    setup(const std::function<void(parallel::distributed::Triangulation<dim> &)>
+            &load_mesh = {});
+
+    /// Assembles K and the loads; throws an InputError if the supports
+    /// allow a rigid-body motion.
+    void
+    assemble();
+
+    /// The header lines of a run: scene, mesh, contact.
+    void
+    print_summary(const ConditionalOStream &out) const;
+
+    const parallel::distributed::Triangulation<dim> &
+    mesh() const
+    {
+      return triangulation;
+    }
+
+    MPI_Comm
+    get_mpi_communicator() const
+    {
+      return triangulation.get_communicator();
+    }
+
+    const ElasticBody<dim> &
+    get_body() const
+    {
+      return *body;
+    }
+
+    const ContactOperator<dim> &
+    get_contact() const
+    {
+      return *contact;
+    }
+
+    /// The contact operator, to move the obstacle.
+    ContactOperator<dim> &
+    get_contact()
+    {
+      return *contact;
+    }
+
+    const LinearElasticMaterial<dim> &
+    get_material() const
+    {
+      return *material;
+    }
+
+  private:
+    // Made one after the other in the constructor: each needs the ones
+    // before it (the boundary names need the coarse mesh).
+    parallel::distributed::Triangulation<dim>    triangulation;
+    std::unique_ptr<Geometry::Interface<dim>>    geometry;
+    std::unique_ptr<MeshRefinement<dim>>         refinement;
+    BoundaryNames                                boundary_names;
+    std::unique_ptr<LinearElasticMaterial<dim>>  material;
+    std::unique_ptr<BoundaryConditions<dim>>     boundary_conditions;
+    std::unique_ptr<ElasticBody<dim>>            body;
+    std::unique_ptr<ContactOperator<dim>>        contact;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,120 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <frictional_contact/driver/increment_solver.h>
+#include <frictional_contact/model/model.h>
+#include <frictional_contact/postprocess/contact_summary.h>
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace FrictionalContact
+{
+  namespace Postprocess
+  {
+    /// One column of the statistics file: a label and a value.
+    struct Column
+    {
+      std::string                          label;
+      std::variant<std::uint64_t, double> value;
+      /// Whether a double is printed in scientific notation.
+      bool scientific = false;
+    };
+
+    using Columns = std::vector<Column>;
+
+    /// What an increment leaves for the postprocessors.
+    template <int dim>
+    struct IncrementResult
+    {
+      /// Counted from 1, of n_increments.
+      unsigned int                 increment;
+      unsigned int                 n_increments;
+      double                       time;
+      double                       load_factor;
+      const Model<dim>            &model;
+      /// The state after the increment (before it, if it failed).
+      const State<dim>            &state;
+      const IncrementOutcome<dim> &outcome;
+      /// Counts, forces and areas of the contact (zero if it failed).
+      const ContactSummary<dim> &summary;
+
+      bool
+      last() const
+      {
+        return increment == n_increments;
+      }
+    };
+
+    /**
+     * A postprocessor in the sense of ASPECT: after each increment it
+     * writes what it is for and returns its columns of the statistics
+     * file. Postprocessors register themselves with
+     * FRICTIONAL_CONTACT_REGISTER_PLUGIN(Postprocess::Interface, ...) and
+     * run in the order of <Output/Postprocessors>; their entries are
+     * declared in the subsection "Output" itself.
+     */
+    template <int dim>
+    class Interface
+    {
+    public:
+      virtual ~Interface() = default;
+
+      /// Reads its entries (inside "Output"); @p directory is where it writes.
+      virtual void
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &directory,
+                       const MPI_Comm     comm) = 0;
+
+      /// What it writes ("vtu every increment"), or "" if nothing.
+      virtual std::string
+      describe() const
+      {
+        return "";
+      }
+
+      /// Whether it writes files into the output directory.
+      virtual bool
+      writes_files() const
+      {
+        return !describe().empty();
+      }
+
+      /// Whether it needs the contact solver's iterations recorded.
+      virtual bool
+      needs_history() const
+      {
+        return false;
+      }
+
+      /// Throws an InputError if it cannot work with @p n_increments.
+      virtual void
+      check_increments(const unsigned int /*n_increments*/) const
+      {}
+
+      /// Writes what it writes for a converged increment; returns its columns.
+      virtual Columns
+      execute(const IncrementResult<dim> &result) = 0;
+
+      /// Called for an increment whose contact solve did not converge,
+      /// before the run stops or cuts it.
+      virtual void
+      execute_failed(const IncrementResult<dim> & /*result*/)
+      {}
+
+      /// What a checkpoint keeps of it (the files written so far, say).
+      virtual std::string
+      save_state() const
+      {
+        return "";
+      }
+
+      virtual void
+      load_state(const std::string & /*state*/)
+      {}
+    };
+  } // namespace Postprocess
+} // namespace FrictionalContact

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/solvers/friction_cone.h>
+
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The paper's operator T between displacements and the local contact
+   * coordinates of the candidates, with the friction cone: what the
+   * accelerated primal-dual method needs of a contact problem. Candidate j
+   * has dim columns T_j = [t_n,j, T_t,j] of T; T r = sum_j T_j r_j are the
+   * nodal forces of the reactions r, and T_j^T u the normal and tangential
+   * parts of a displacement u at j. The semismooth Newton method also
+   * needs the T_j to be orthonormal on disjoint entries (as ContactOperator's
+   * frames are), so that v - T_j T_j^T v removes the part of v at j. The candidates of an MPI rank touch only
+   * its locally owned vector entries.
+   *
+   * ContactOperator builds T from a mesh and an obstacle (one node per
+   * candidate, orthonormal frames); SparseContactMap holds a general sparse
+   * T read from an FCLIB file.
+   */
+  template <int dim>
+  class ContactMap
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    virtual ~ContactMap() = default;
+
+    /// Number of candidates on this rank.
+    virtual unsigned int
+    n_local() const = 0;
+
+    /// Number of candidates on all ranks (the paper's c).
+    virtual types::global_dof_index
+    n_candidates() const = 0;
+
+    /// T_j^T u: normal part (component 0) and tangential parts of @p u at j.
+    virtual Tensor<1, dim>
+    local_part(const unsigned int j, const Vector &u) const = 0;
+
+    /// f = T r for the reactions @p r of the local candidates.
+    virtual void
+    apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const = 0;
+
+    /// f += T_j r_j: the nodal forces of the reaction @p r_j of candidate j.
+    virtual void
+    add_reaction(const unsigned int    j,
+                 const Tensor<1, dim> &r_j,
+                 Vector               &f) const = 0;
+
+    /// c_j = t_n,j^T K t_n,j for each local candidate: the stiffness of
+    /// candidate j in the normal direction, a scale of K that follows the
+    /// units of the problem.
+    virtual std::vector<double>
+    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const = 0;
+
+    /// The largest singular value of T (the paper's sigma_T).
+    virtual double
+    largest_singular_value() const = 0;
+
+    /// The friction cone (one coefficient for all candidates).
+    virtual const FrictionCone<dim> &
+    friction_cone() const = 0;
+
+    double
+    friction_coefficient() const
+    {
+      return friction_cone().mu;
+    }
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,106 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/solvers/contact_map.h>
+
+#include <string>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * One incremental problem of the paper, eq. (9): find du and r with
+   * K du - p = T r and the cone complementarity at every candidate, where
+   * the displacement of node j relative to the obstacle is
+   * T_j^T du - obstacle_slip[j].
+   */
+  template <int dim>
+  struct IncrementalProblem
+  {
+    const TrilinosWrappers::SparseMatrix &stiffness;
+    /// p = p^{l+1} - K u^l (zero at fixed dofs).
+    const TrilinosWrappers::MPI::Vector &load;
+    const ContactMap<dim>               &contact;
+    /// A length of the increment (largest gap, displacement or elastic
+    /// displacement increment) for tolerances that follow the units.
+    double length_scale = 1;
+    /// The paper's sigma_T and mu_pi.
+    double largest_singular_value_T = 1;
+    double smallest_eigenvalue_K    = 0;
+    /// g_j: the gap of candidate j before the increment, with the obstacle
+    /// already at its position at the end of the increment.
+    std::vector<double> gaps;
+    /// The obstacle's displacement increment in the frame of j, tangential
+    /// components only (component 0 is zero: the gap has it).
+    std::vector<Tensor<1, dim>> obstacle_slip;
+
+    /// (t_n,j^T du, T_t,j^T du - obstacle's tangential motion)
+    Tensor<1, dim>
+    relative_displacement(const unsigned int j,
+                          const TrilinosWrappers::MPI::Vector &du) const
+    {
+      return contact.local_part(j, du) - obstacle_slip[j];
+    }
+  };
+
+  /// The paper's three residuals, eqs. (24)-(26).
+  struct Residuals
+  {
+    /// |K du - p - T r|
+    double force_balance = 0;
+    /// |sum_j <(-g_j - mu |T_t,j^T du| + t_n,j^T du, T_t,j^T du), r_j>|
+    double complementarity = 0;
+    /// |min(g - T_n^T du, 0)|
+    double penetration = 0;
+
+    bool
+    finite() const
+    {
+      return std::isfinite(force_balance) && std::isfinite(complementarity) &&
+             std::isfinite(penetration);
+    }
+  };
+
+  /**
+   * The residuals at (du, r), given K du and T r (which the solvers have at
+   * hand). @p scratch is a work vector of the size of du.
+   */
+  template <int dim>
+  Residuals
+  compute_residuals(const IncrementalProblem<dim>     &problem,
+                    const TrilinosWrappers::MPI::Vector &du,
+                    const TrilinosWrappers::MPI::Vector &K_du,
+                    const TrilinosWrappers::MPI::Vector &T_r,
+                    const std::vector<Tensor<1, dim>>   &r,
+                    TrilinosWrappers::MPI::Vector       &scratch);
+
+  /// One row of a convergence history: one iteration of the contact solver.
+  struct HistoryRow
+  {
+    unsigned int iteration;
+    double       seconds;
+    Residuals    residuals;
+    double       step;
+    /// Krylov (CG or GMRES) iterations of the iteration's linear solves.
+    unsigned int linear_iterations;
+  };
+
+  /// What a contact solve reports, whatever the method.
+  struct SolveStatistics
+  {
+    bool         converged      = false;
+    unsigned int iterations     = 0;
+    /// Krylov (CG or GMRES) iterations of all linear solves.
+    unsigned int linear_iterations = 0;
+    unsigned int amg_setups     = 0;
+    double       seconds        = 0;
+    double       last_step      = 0;
+    Residuals    residuals;
+    /// Why the solve stopped, if it did not converge.
+    std::string  failure;
+    /// One row per iteration, if recording was asked for.
+    std::vector<HistoryRow> history;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,74 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <frictional_contact/solvers/contact_problem.h>
+#include <frictional_contact/solvers/shifted_stiffness_solver.h>
+
+#include <string>
+
+namespace FrictionalContact
+{
+  /**
+   * A method that solves one incremental contact problem. Methods register
+   * themselves with FRICTIONAL_CONTACT_REGISTER_PLUGIN(ContactSolver, ...)
+   * and are chosen by `Contact solver/Method`; each reads its parameters
+   * from its own subsection of "Contact solver". All methods report the
+   * same residuals and convergence history, so that they can be compared
+   * side by side.
+   */
+  template <int dim>
+  class ContactSolver
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    virtual ~ContactSolver() = default;
+
+    virtual void
+    parse_parameters(ParameterHandler &prm) = 0;
+
+    /// One line for the run's header: the method and its main settings.
+    virtual std::string
+    describe() const = 0;
+
+    /// What the method calls its iterations ("primal-dual", "Newton").
+    virtual std::string
+    iteration_name() const = 0;
+
+    /// Whether the method needs mu_pi (problem.smallest_eigenvalue_K).
+    virtual bool
+    needs_smallest_eigenvalue() const
+    {
+      return false;
+    }
+
+    /**
+     * Solves @p problem. @p du and @p r hold the initial iterate on entry
+     * and the last iterate on exit (whether or not it converged).
+     */
+    virtual SolveStatistics
+    solve(const IncrementalProblem<dim> &problem,
+          ShiftedStiffnessSolver        &linear_solver,
+          Vector                        &du,
+          std::vector<Tensor<1, dim>>   &r,
+          const bool                     record_history) const = 0;
+
+    /// Where progress lines go (every "Report every" iterations).
+    void
+    set_output(const ConditionalOStream &stream, const unsigned int every)
+    {
+      pcout        = &stream;
+      report_every = every;
+    }
+
+  protected:
+    /// Prints a progress line for iteration @p k if one is due.
+    void
+    report(const unsigned int k, const HistoryRow &row) const;
+
+    const ConditionalOStream *pcout        = nullptr;
+    unsigned int              report_every = 0;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,65 @@
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/increment_driver.h>
+
+namespace FrictionalContact
+{
+  void
+  IncrementDriver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    LoadingHistory::declare_parameters(prm);
+    prm.declare_entry("On failure",
+                      "abort",
+                      Patterns::Selection("abort|cut increment"),
+                      "What a failed increment does (no convergence, "
+                      "divergence, stagnation): abort the run, with the "
+                      "residuals, keeping the finished increments; or retry "
+                      "it as two halves, up to Maximum cuts times in a row.");
+    prm.declare_entry("Maximum cuts",
+                      "5",
+                      Patterns::Integer(0, 30),
+                      "How often in a row an increment may be cut in half.");
+    prm.leave_subsection();
+  }
+
+
+
+  IncrementDriver::IncrementDriver(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    history        = std::make_unique<LoadingHistory>(prm);
+    cut_on_failure = prm.get("On failure") == "cut increment";
+    maximum_cuts   = prm.get_integer("Maximum cuts");
+    prm.leave_subsection();
+    end_times = history->increment_times();
+  }
+
+
+
+  void
+  IncrementDriver::run(const unsigned int first,
+                       const Increment   &increment,
+                       std::ostream      &out)
+  {
+    unsigned int cuts = 0;
+    for (unsigned int l = first; l < end_times.size(); ++l)
+      try
+        {
+          increment(l);
+          cuts = 0;
+        }
+      catch (const SolverError &error)
+        {
+          if (!cut_on_failure || cuts == maximum_cuts)
+            throw;
+          // Retry from the same state with half the increment.
+          end_times.insert(end_times.begin() + l,
+                           (start_time(l) + end_times[l]) / 2);
+          ++cuts;
+          out << "Cut in half (" << cuts << " of at most " << maximum_cuts
+              << " cuts in a row), now " << end_times.size()
+              << " increments, because " << error.what() << std::endl;
+          --l;
+        }
+  }
+} // namespace FrictionalContact

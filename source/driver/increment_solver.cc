@@ -1,0 +1,273 @@
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/increment_solver.h>
+#include <frictional_contact/solvers/stiffness_spectrum.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  IncrementSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    ContactSolverParameters<dim>::declare_parameters(prm);
+    ShiftedStiffnessSolver::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  IncrementSolver<dim>::IncrementSolver(ParameterHandler         &prm,
+                                        const ConditionalOStream &pcout)
+    : pcout(pcout)
+    , linear_solver(prm)
+    , solver(prm, pcout)
+  {}
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::initialize(const Model<dim> &model)
+  {
+    const ElasticBody<dim>     &body    = model.get_body();
+    const ContactOperator<dim> &contact = model.get_contact();
+    linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
+    if (contact.active())
+      {
+        sigma_T = contact.largest_singular_value();
+        pcout << "Solver: " << solver.method->describe() << std::endl
+              << "    sigma_T = " << Input::to_text(sigma_T)
+              << " (largest singular value of T)" << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  IncrementSolver<dim>::smallest_eigenvalue_of_K(const Model<dim> &model,
+                                                 TimerOutput      &timer)
+  {
+    if (mu_pi > 0)
+      return mu_pi;
+    TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
+    const SmallestEigenvalue eigenvalue =
+      compute_smallest_eigenvalue(model.get_body().stiffness_matrix(),
+                                  linear_solver,
+                                  solver.eigenvalue_tolerance,
+                                  solver.lanczos_vectors);
+    mu_pi = eigenvalue.value;
+    pcout << "    mu_pi = " << Input::scientific(mu_pi, 6)
+          << " (smallest eigenvalue of K, PARPACK; Rayleigh quotient "
+          << Input::scientific(eigenvalue.rayleigh_quotient, 6) << ")"
+          << std::endl
+          << "-- mu_pi took " << eigenvalue.n_solves << " solves with K, "
+          << eigenvalue.cg_iterations << " CG iterations" << std::endl;
+    return mu_pi;
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<IncrementalProblem<dim>>
+  IncrementSolver<dim>::make_problem(
+    const Model<dim>                    &model,
+    const TrilinosWrappers::MPI::Vector &load,
+    const TrilinosWrappers::MPI::Vector &start,
+    const Tensor<1, dim>                &obstacle_motion) const
+  {
+    const ContactOperator<dim> &contact = model.get_contact();
+    auto                        problem = std::make_unique<IncrementalProblem<dim>>(
+      IncrementalProblem<dim>{model.get_body().stiffness_matrix(), load, contact});
+    problem->largest_singular_value_T = sigma_T;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l
+        // (with the prescribed part of the increment).
+        problem->gaps.push_back(contact.reference_gap(j) -
+                                contact.local_part(j, start)[0]);
+        Tensor<1, dim> slip = contact.to_local(j, obstacle_motion);
+        slip[0]             = 0;
+        problem->obstacle_slip.push_back(slip);
+      }
+    return problem;
+  }
+
+
+
+  template <int dim>
+  IncrementOutcome<dim>
+  IncrementSolver<dim>::solve(const Model<dim>  &model,
+                              const State<dim>  &state,
+                              const unsigned int increment,
+                              const double      t_start,
+                              const double      t_end,
+                              const double      load_factor,
+                              const bool        record_history,
+                              TimerOutput      &timer)
+  {
+    const ElasticBody<dim>     &body    = model.get_body();
+    const ContactOperator<dim> &contact = model.get_contact();
+
+    // The increment of the prescribed displacements, and the configuration
+    // it leads to before the rest of the increment is solved for.
+    TrilinosWrappers::MPI::Vector lifting = body.make_vector();
+    body.prescribed_increment(t_start, t_end, lifting);
+    Input::require_finite(lifting.l2_norm(),
+                          "Boundary conditions/Prescribed displacement",
+                          t_end);
+    TrilinosWrappers::MPI::Vector start = state.u;
+    start += lifting;
+
+    IncrementOutcome<dim> outcome;
+    outcome.load = body.make_vector();
+    body.internal_force(start, outcome.load);
+    outcome.load.sadd(-1., load_factor, body.load_vector());
+
+    outcome.du_solved       = body.make_vector();
+    SolveStatistics &result = outcome.statistics;
+    if (!contact.active() || solver.try_elastic_first)
+      {
+        TimerOutput::Scope scope(timer, "Elastic solve");
+        const Timer        wall;
+        const unsigned int setups_before = linear_solver.n_amg_setups;
+        result.linear_iterations =
+          linear_solver.solve(0.,
+                              outcome.du_solved,
+                              outcome.load,
+                              linear_solver.relative_tolerance() *
+                                outcome.load.l2_norm());
+        result.amg_setups = linear_solver.n_amg_setups - setups_before;
+        result.seconds    = wall.wall_time();
+        if (!std::isfinite(outcome.du_solved.l2_norm()))
+          throw SolverError("increment " + std::to_string(increment) +
+                            " (t = " + Input::to_text(t_end) + ")" +
+                            ": the elastic solve gave a displacement that is "
+                            "not finite");
+      }
+    if (contact.active())
+      {
+        outcome.problem =
+          make_problem(model,
+                       outcome.load,
+                       start,
+                       contact.obstacle_displacement(t_end) -
+                         contact.obstacle_displacement(t_start));
+        solve_contact(model, state, start, outcome, record_history, timer);
+        if (!result.converged)
+          return outcome;
+        outcome.results = contact_results(contact, state, outcome);
+      }
+    else
+      {
+        result.iterations = 1;
+        result.converged  = true;
+      }
+    outcome.du = outcome.du_solved;
+    body.get_constraints().distribute(outcome.du);
+    outcome.du += lifting;
+    return outcome;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::solve_contact(const Model<dim>      &model,
+                                      const State<dim>      &state,
+                                      const TrilinosWrappers::MPI::Vector &start,
+                                      IncrementOutcome<dim> &outcome,
+                                      const bool             record_history,
+                                      TimerOutput           &timer)
+  {
+    const ContactOperator<dim>    &contact = model.get_contact();
+    const MPI_Comm                 comm    = model.get_mpi_communicator();
+    IncrementalProblem<dim>       &problem = *outcome.problem;
+    TrilinosWrappers::MPI::Vector &du      = outcome.du_solved;
+    SolveStatistics               &result  = outcome.statistics;
+    std::vector<Tensor<1, dim>>   &r       = outcome.reactions;
+    r.assign(contact.n_local(), Tensor<1, dim>());
+
+    // A length for tolerances that follow the units: the largest gap,
+    // displacement so far, or elastic displacement of this increment.
+    double largest_gap = 0;
+    for (const double g : problem.gaps)
+      largest_gap = std::max(largest_gap, std::abs(g));
+    problem.length_scale =
+      std::max({Utilities::MPI::max(largest_gap, comm),
+                start.linfty_norm(),
+                solver.try_elastic_first ? du.linfty_norm() : 0.});
+    if (!(problem.length_scale > 0))
+      problem.length_scale = 1;
+
+    bool separates = false;
+    if (solver.try_elastic_first)
+      {
+        bool penetrates = false;
+        for (unsigned int j = 0; j < contact.n_local() && !penetrates; ++j)
+          penetrates =
+            problem.relative_displacement(j, du)[0] > problem.gaps[j];
+        separates = !Utilities::MPI::logical_or(penetrates, comm);
+      }
+    if (separates)
+      {
+        // Every node free, r = 0: only the residuals are left to compute.
+        const ElasticBody<dim>       &body     = model.get_body();
+        TrilinosWrappers::MPI::Vector K_du     = body.make_vector();
+        TrilinosWrappers::MPI::Vector no_force = body.make_vector();
+        TrilinosWrappers::MPI::Vector scratch  = body.make_vector();
+        body.stiffness_matrix().vmult(K_du, du);
+        result.residuals =
+          compute_residuals(problem, du, K_du, no_force, r, scratch);
+        result.converged = true;
+        return;
+      }
+
+    // Warm start: the reactions of the previous increment, du = 0.
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      r[j] = contact.friction_cone().project(
+        contact.to_local(j, state.contact_forces[j]));
+    du = 0;
+    if (solver.method->needs_smallest_eigenvalue())
+      problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K(model, timer);
+    const SolveStatistics elastic = result;
+    {
+      TimerOutput::Scope scope(timer, "Contact solve");
+      result = solver.method->solve(problem, linear_solver, du, r, record_history);
+    }
+    result.linear_iterations += elastic.linear_iterations;
+    result.amg_setups += elastic.amg_setups;
+    result.seconds += elastic.seconds;
+  }
+
+
+
+  template <int dim>
+  ContactResults<dim>
+  IncrementSolver<dim>::contact_results(const ContactOperator<dim>  &contact,
+                                        const State<dim>            &state,
+                                        const IncrementOutcome<dim> &outcome) const
+  {
+    const IncrementalProblem<dim>     &problem = *outcome.problem;
+    const std::vector<Tensor<1, dim>> &r       = outcome.reactions;
+    ContactResults<dim>                results;
+    results.reaction = r;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        results.reaction_increment.push_back(
+          r[j] - contact.to_local(j, state.contact_forces[j]));
+        results.local_displacement.push_back(
+          problem.relative_displacement(j, outcome.du_solved));
+        results.gap.push_back(problem.gaps[j] -
+                              results.local_displacement.back()[0]);
+        results.state.push_back(contact.friction_cone().state(r[j]));
+        const double area = contact.nodal_area(j);
+        results.pressure.push_back(area > 0 ? -r[j][0] / area : 0.);
+      }
+    return results;
+  }
+
+  template class IncrementSolver<2>;
+  template class IncrementSolver<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,278 @@
+#include <deal.II/base/utilities.h>
+
+#include <frictional_contact/base/files.h>
+#include <frictional_contact/driver/simulator.h>
+#include <frictional_contact/postprocess/screen_report.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <sstream>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the scene: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Where results are written (created if needed).");
+    prm.declare_entry("Resume computation",
+                      "false",
+                      Patterns::Selection("false|true|auto"),
+                      "true: continue the loading history from the checkpoint "
+                      "in the output directory (written after each increment, "
+                      "see Output/Checkpoint every), for example after the "
+                      "run was killed; the number of MPI ranks may differ. "
+                      "auto: resume if there is a checkpoint, else start.");
+    Model<dim>::declare_parameters(prm);
+    IncrementDriver::declare_parameters(prm);
+    IncrementSolver<dim>::declare_parameters(prm);
+    Postprocess::Manager<dim>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm comm)
+    : mpi_communicator(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , output_directory(prm.get("Output directory"))
+    , model(prm, comm)
+    , driver(prm)
+    , increment_solver(prm, pcout)
+    , postprocessors(prm, output_directory, comm)
+    , checkpoint(output_directory, comm)
+  {
+    const std::string resume_choice = prm.get("Resume computation");
+    resume = resume_choice == "true" ||
+             (resume_choice == "auto" && checkpoint.exists());
+    postprocessors.check_increments(driver.times().size());
+
+    std::ostringstream parameters;
+    prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+    parameters_as_run = parameters.str();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup()
+  {
+    // Made here, not in the constructor, so that a parameter error there
+    // does not meet a TimerOutput that complains about it.
+    timer = std::make_unique<TimerOutput>(mpi_communicator,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
+    {
+      TimerOutput::Scope scope(*timer, "Setup");
+      if (resume)
+        {
+          checkpoint.verify(parameters_as_run);
+          model.setup([&](auto &mesh) { checkpoint.load_mesh(mesh); });
+        }
+      else
+        model.setup();
+    }
+    {
+      TimerOutput::Scope scope(*timer, "Assembly");
+      model.assemble();
+    }
+
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    pcout << "-- contact " << FRICTIONAL_CONTACT_VERSION << " on deal.II "
+          << DEAL_II_PACKAGE_VERSION << ", " << n_ranks << " MPI rank"
+          << (n_ranks > 1 ? "s" : "") << std::endl;
+    model.print_summary(pcout);
+    pcout << "Loading: " << driver.loading().describe() << std::endl;
+    const std::string written = postprocessors.describe();
+    pcout << "Output: "
+          << (written.empty() ? "nothing" :
+                                written + " in " + output_directory + "/")
+          << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    setup();
+    const unsigned int n_initial = driver.times().size();
+    if (postprocessors.writes_files() ||
+        postprocessors.checkpoint_due(n_initial, n_initial))
+      check_output_directory(output_directory, mpi_communicator);
+    state.u = model.get_body().make_vector();
+    state.contact_forces.assign(model.get_contact().n_local(), Tensor<1, dim>());
+    const unsigned int first_increment = resume ? load_checkpoint() : 0;
+    increment_solver.initialize(model);
+
+    driver.run(
+      first_increment,
+      [&](const unsigned int l) { solve_increment(l); },
+      pcout.get_stream());
+    timer->print_wall_time_statistics(mpi_communicator);
+    print_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_increment(const unsigned int l)
+  {
+    const double t_start     = driver.start_time(l);
+    const double t           = driver.times()[l];
+    const double load_factor = driver.loading().load_factor(t);
+    ContactOperator<dim> &contact = model.get_contact();
+    contact.move_obstacle(contact.obstacle_displacement(t));
+
+    const IncrementOutcome<dim> outcome =
+      increment_solver.solve(model,
+                             state,
+                             l + 1,
+                             t_start,
+                             t,
+                             load_factor,
+                             postprocessors.needs_history(),
+                             *timer);
+    const SolveStatistics &statistics = outcome.statistics;
+    if (!statistics.converged)
+      {
+        const ContactSummary<dim>             no_contact;
+        const Postprocess::IncrementResult<dim> result{
+          l + 1, unsigned(driver.times().size()), t, load_factor,
+          model,  state, outcome, no_contact};
+        postprocessors.execute_failed(result);
+        const Residuals &res = statistics.residuals;
+        throw SolverError(
+          "increment " + std::to_string(l + 1) + " (t = " + Input::to_text(t) +
+          "): " + statistics.failure + ". Residuals: force balance " +
+          Input::scientific(res.force_balance) + ", complementarity " +
+          Input::scientific(res.complementarity) + ", penetration " +
+          Input::scientific(res.penetration) +
+          ". The increments before it are written; this one is not");
+      }
+
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      state.contact_forces[j] = contact.to_cartesian(j, outcome.reactions[j]);
+    state.u += outcome.du;
+
+    const ContactSummary<dim> summary = summarize(
+      contact, outcome.results, state.contact_forces, mpi_communicator);
+    const unsigned int n = driver.times().size();
+    const Postprocess::IncrementResult<dim> result{
+      l + 1, n, t, load_factor, model, state, outcome, summary};
+    Postprocess::print_increment(pcout,
+                                 result,
+                                 increment_solver.iteration_name(),
+                                 increment_solver.last_preconditioner());
+    if (result.last())
+      Postprocess::print_final_state(pcout, result);
+
+    TimerOutput::Scope scope(*timer, "Output");
+    // The parameters go with the first results, so that a run that fails
+    // before leaves an existing output folder as it was.
+    if (l == 0 && postprocessors.writes_files())
+      run_on_root(mpi_communicator, [&]() {
+        write_file_atomically(output_directory + "/parameters.prm",
+                              parameters_as_run);
+      });
+    postprocessors.execute(result);
+    if (postprocessors.checkpoint_due(l + 1, n))
+      save_checkpoint(l);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_summary() const
+  {
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    pcout << "-- summary:";
+    for (const auto &[section, seconds] :
+         timer->get_summary_data(TimerOutput::total_wall_time))
+      pcout << ' ' << section << " = "
+            << Utilities::MPI::max(seconds, mpi_communicator) << " s;";
+    pcout << " peak memory = "
+          << Utilities::MPI::max(memory.VmHWM, mpi_communicator) / 1024.
+          << " MB per rank (largest)" << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_checkpoint(const unsigned int l) const
+  {
+    const ElasticBody<dim>       &body      = model.get_body();
+    TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
+    u_ghosted                               = state.u;
+    // The contact forces as a nodal field, so that they move with the mesh.
+    TrilinosWrappers::MPI::Vector forces = body.make_vector();
+    model.get_contact().set_nodal_values(state.contact_forces, forces);
+    TrilinosWrappers::MPI::Vector forces_ghosted = body.make_ghosted_vector();
+    forces_ghosted                               = forces;
+
+    std::ostringstream            text;
+    boost::archive::text_oarchive archive(text);
+    const unsigned int            n_done = l + 1;
+    const std::string             written = postprocessors.save_state();
+    archive << n_done << driver.times() << written;
+    checkpoint.save(model.mesh(),
+                    body.get_dof_handler(),
+                    {&u_ghosted, &forces_ghosted},
+                    text.str(),
+                    parameters_as_run);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::load_checkpoint()
+  {
+    const ContactOperator<dim>   &contact = model.get_contact();
+    TrilinosWrappers::MPI::Vector forces  = model.get_body().make_vector();
+    std::vector<TrilinosWrappers::MPI::Vector *> vectors = {&state.u, &forces};
+    checkpoint.load_vectors(model.get_body().get_dof_handler(), vectors);
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      state.contact_forces[j] = contact.nodal_value(j, forces);
+
+    std::istringstream            text(checkpoint.load_state());
+    boost::archive::text_iarchive archive(text);
+    unsigned int                  n_done = 0;
+    std::vector<double>           times;
+    std::string                   written;
+    archive >> n_done >> times >> written;
+    driver.restore_times(times);
+    postprocessors.load_state(written);
+    if (n_done >= times.size())
+      throw InputError("<Resume computation>: the checkpoint in '" +
+                       checkpoint.path() + "' is of the last increment (" +
+                       std::to_string(n_done) + " of " +
+                       std::to_string(times.size()) +
+                       "): the run is complete; set Resume computation = "
+                       "false to run it again");
+    pcout << "Resuming after increment " << n_done << " (t = "
+          << Input::to_text(times[n_done - 1]) << ") from "
+          << checkpoint.path() << std::endl;
+    return n_done;
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace FrictionalContact

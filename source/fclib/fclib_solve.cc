@@ -1,0 +1,299 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <frictional_contact/fclib/fclib_export.h>
+#include <frictional_contact/fclib/fclib_solve.h>
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/solvers/stiffness_spectrum.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// Problems up to this size get the eigenvalues of M from LAPACK.
+    constexpr unsigned int largest_dense_size = 1000;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  FclibSolve<dim>::set_defaults(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    prm.set("Method", "accelerated primal-dual");
+    prm.leave_subsection();
+    prm.enter_subsection("Linear solver");
+    prm.set("Preconditioner", "jacobi");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  FclibSolve<dim>::FclibSolve(ParameterHandler  &prm,
+                              FclibProblem       problem,
+                              const std::string &file_name,
+                              const MPI_Comm     comm)
+    : mpi_communicator(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , fclib(std::move(problem))
+    , file_name(file_name)
+    , owned(fclib.n)
+    , linear_solver(prm)
+    , solver(prm, pcout)
+  {
+    AssertThrow(fclib.spacedim == dim, ExcInternalError());
+    prm.enter_subsection("Linear solver");
+    if (prm.get("Preconditioner") != "jacobi")
+      Input::fail("Linear solver/Preconditioner",
+                  prm.get("Preconditioner"),
+                  "jacobi: an FCLIB problem has no mesh, hence no "
+                  "rigid-body modes for the AMG");
+    prm.leave_subsection();
+    if (solver.method_name != "accelerated primal-dual")
+      Input::fail("Contact solver/Method",
+                  solver.method_name,
+                  "accelerated primal-dual: the other methods need the "
+                  "contact candidates of a mesh (one node each)");
+
+    // Rank 0 holds everything.
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (root)
+      owned.add_range(0, fclib.n);
+    TrilinosWrappers::SparsityPattern pattern(owned, comm);
+    if (root)
+      for (const auto &e : fclib.M)
+        pattern.add(e.row, e.column);
+    pattern.compress();
+    M.reinit(pattern);
+    if (root)
+      for (const auto &e : fclib.M)
+        M.add(e.row, e.column, e.value);
+    M.compress(VectorOperation::add);
+    f = to_vector(fclib.f);
+
+    // T = H with the normal columns negated (doc/fclib.md).
+    std::vector<std::array<typename SparseContactMap<dim>::Column, dim>>
+      columns(root ? fclib.n_contacts() : 0);
+    if (root)
+      for (const auto &e : fclib.H)
+        {
+          const unsigned int k = e.column % dim;
+          columns[e.column / dim][k].emplace_back(e.row,
+                                                  k == 0 ? -e.value : e.value);
+        }
+    contact = std::make_unique<SparseContactMap<dim>>(std::move(columns),
+                                                      fclib.mu[0],
+                                                      owned,
+                                                      comm);
+    linear_solver.initialize(M, {});
+  }
+
+
+
+  template <int dim>
+  IncrementalProblem<dim>
+  FclibSolve<dim>::incremental_problem() const
+  {
+    IncrementalProblem<dim> problem{M, f, *contact};
+    for (unsigned int j = 0; j < contact->n_local(); ++j)
+      {
+        problem.gaps.push_back(fclib.w[dim * j]);
+        Tensor<1, dim> slip;
+        for (unsigned int k = 1; k < dim; ++k)
+          slip[k] = -fclib.w[dim * j + k];
+        problem.obstacle_slip.push_back(slip);
+      }
+    return problem;
+  }
+
+
+
+  template <int dim>
+  void
+  FclibSolve<dim>::solve(const std::string &solution_file)
+  {
+    pcout << "FCLIB problem " << file_name
+          << (fclib.title.empty() ? "" : " (" + fclib.title + ")") << ":\n"
+          << "    n = " << fclib.n << " unknowns, " << fclib.n_contacts()
+          << " contacts in " << dim << "D, mu = "
+          << Input::to_text(fclib.mu[0]) << std::endl;
+
+    IncrementalProblem<dim> problem = incremental_problem();
+    problem.largest_singular_value_T = contact->largest_singular_value();
+
+    // The paper's mu_pi: the smallest eigenvalue of M.
+    if (fclib.n <= largest_dense_size)
+      {
+        double smallest = 0;
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          {
+            LAPACKFullMatrix<double> dense(fclib.n, fclib.n);
+            for (const auto &e : fclib.M)
+              dense(e.row, e.column) += e.value;
+            dense.compute_eigenvalues();
+            smallest = std::numeric_limits<double>::max();
+            for (unsigned int i = 0; i < fclib.n; ++i)
+              smallest = std::min(smallest, dense.eigenvalue(i).real());
+          }
+        problem.smallest_eigenvalue_K =
+          Utilities::MPI::broadcast(mpi_communicator, smallest, 0);
+      }
+    else
+      problem.smallest_eigenvalue_K =
+        compute_smallest_eigenvalue(M,
+                                    linear_solver,
+                                    solver.eigenvalue_tolerance,
+                                    solver.lanczos_vectors)
+          .value;
+    pcout << "    smallest eigenvalue of M = "
+          << Input::scientific(problem.smallest_eigenvalue_K)
+          << ", largest singular value of H = "
+          << Input::scientific(problem.largest_singular_value_T) << std::endl;
+    if (!(problem.smallest_eigenvalue_K > 0))
+      throw InputError("the FCLIB file '" + file_name +
+                       "' has a matrix M that is not positive definite "
+                       "(smallest eigenvalue " +
+                       Input::scientific(problem.smallest_eigenvalue_K) + ")");
+
+    // The length scale: the largest |w| or free velocity M^{-1} f.
+    Vector free_velocity(f);
+    free_velocity = 0;
+    linear_solver.solve(0.,
+                        free_velocity,
+                        f,
+                        linear_solver.relative_tolerance() * f.l2_norm());
+    double largest_w = 0;
+    for (const double w_i : fclib.w)
+      largest_w = std::max(largest_w, std::abs(w_i));
+    problem.length_scale = std::max(largest_w, free_velocity.linfty_norm());
+    if (!(problem.length_scale > 0))
+      problem.length_scale = 1;
+
+    pcout << "Solver: " << solver.method->describe() << std::endl;
+    Vector                      du(f);
+    std::vector<Tensor<1, dim>> r(contact->n_local());
+    du                           = 0;
+    const SolveStatistics result = solver.method->solve(problem, linear_solver, du, r, false);
+
+    const Residuals &res = result.residuals;
+    pcout << (result.converged ? "Converged" : "Not converged") << " after "
+          << result.iterations << ' ' << solver.method->iteration_name()
+          << " iterations (" << result.linear_iterations << " CG iterations)"
+          << std::endl;
+    const FclibSolution solution = to_fclib(du, r);
+    const double        error    = report(solution);
+    pcout << "FCLIB result: method=" << solver.method_name
+          << " converged=" << result.converged
+          << " iterations=" << result.iterations
+          << " seconds=" << result.seconds << " error=" << Input::scientific(error)
+          << std::endl;
+    if (!result.converged)
+      throw SolverError(result.failure + ". Residuals: force balance " +
+                        Input::scientific(res.force_balance) + ", complementarity " +
+                        Input::scientific(res.complementarity) + ", penetration " +
+                        Input::scientific(res.penetration) + "; no solution written");
+
+    if (!solution_file.empty())
+      {
+        write_fclib(mpi_communicator, solution_file, fclib, &solution);
+        pcout << "Wrote the problem and its solution to " << solution_file
+              << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FclibSolve<dim>::evaluate(const std::string &solution_file,
+                            const std::string &reference_file)
+  {
+    const FclibSolution solution = read_fclib_solution(solution_file, fclib);
+    pcout << "Solution stored in " << solution_file << ":" << std::endl;
+    report(solution);
+    if (!reference_file.empty())
+      {
+        const FclibSolution reference =
+          read_fclib_solution(reference_file, fclib);
+        pcout << "Relative difference to the solution in " << reference_file
+              << ": v " << Input::scientific(relative_difference(solution.v, reference.v))
+              << ", r " << Input::scientific(relative_difference(solution.r, reference.r))
+              << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  FclibSolve<dim>::report(const FclibSolution &solution) const
+  {
+    // The residuals in our form: du = v, r = (-r_n, r_t).
+    const IncrementalProblem<dim> problem = incremental_problem();
+    const Vector                  du      = to_vector(solution.v);
+    std::vector<Tensor<1, dim>>   r(contact->n_local());
+    for (unsigned int j = 0; j < r.size(); ++j)
+      for (unsigned int k = 0; k < dim; ++k)
+        r[j][k] = (k == 0 ? -1. : 1.) * solution.r[dim * j + k];
+    Vector K_du(du), T_r(du), scratch(du);
+    M.vmult(K_du, du);
+    contact->apply(r, T_r);
+    const Residuals res = compute_residuals(problem, du, K_du, T_r, r, scratch);
+    const double    error = fclib_error(fclib, solution);
+    pcout << "    residuals: force balance " << Input::scientific(res.force_balance)
+          << ", complementarity " << Input::scientific(res.complementarity)
+          << ", penetration " << Input::scientific(res.penetration) << std::endl
+          << "FCLIB error: " << Input::scientific(error) << std::endl;
+    return error;
+  }
+
+
+
+  template <int dim>
+  FclibSolution
+  FclibSolve<dim>::to_fclib(const Vector                      &du,
+                            const std::vector<Tensor<1, dim>> &r) const
+  {
+    FclibSolution solution;
+    solution.v = to_std(du);
+    for (const auto &r_j : r)
+      for (unsigned int k = 0; k < dim; ++k)
+        solution.r.push_back(k == 0 ? -r_j[k] : r_j[k]);
+    solution.r = Utilities::MPI::broadcast(mpi_communicator, solution.r, 0);
+    solution.u = local_velocity(fclib, solution.v);
+    return solution;
+  }
+
+
+
+  template <int dim>
+  typename FclibSolve<dim>::Vector
+  FclibSolve<dim>::to_vector(const std::vector<double> &x) const
+  {
+    Vector vector(owned, mpi_communicator);
+    double *entries = vector.begin();
+    for (unsigned int i = 0; i < owned.n_elements(); ++i)
+      entries[i] = x[i];
+    return vector;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  FclibSolve<dim>::to_std(const Vector &x) const
+  {
+    const std::vector<double> local(x.begin(), x.end());
+    return Utilities::MPI::broadcast(mpi_communicator, local, 0);
+  }
+
+  template class FclibSolve<2>;
+  template class FclibSolve<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,391 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <frictional_contact/model/contact_operator.h>
+#include <frictional_contact/base/plugins.h>
+
+#include <map>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// dim-1 orthonormal tangents to the unit vector @p n.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangents_to(const Tensor<1, dim> &n)
+    {
+      std::array<Tensor<1, dim>, dim - 1> t;
+      if constexpr (dim == 2)
+        {
+          t[0][0] = n[1];
+          t[0][1] = -n[0];
+        }
+      else
+        {
+          // Start from the coordinate axis least aligned with n, so that a
+          // normal along z gives the tangents x and y.
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(n[d]) < std::abs(n[axis]))
+              axis = d;
+          Tensor<1, dim> e;
+          e[axis] = 1;
+          t[0]    = e - (e * n) * n;
+          t[0] /= t[0].norm();
+          t[1] = cross_product_3d(n, t[0]);
+        }
+      return t;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Contact boundaries",
+                      "",
+                      Patterns::Anything(),
+                      "Boundaries (names or ids, separated by ';') whose "
+                      "vertices may touch the obstacle. Empty: no contact, "
+                      "a plain linear elastic solve.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Double(0.),
+                      "Coulomb friction coefficient mu (>= 0). 0 is "
+                      "frictionless contact.");
+    prm.enter_subsection("Obstacle");
+    PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
+      prm, "plane", "The rigid obstacle's shape.");
+    prm.declare_entry("Rigid displacement",
+                      dim == 2 ? "0; 0" : "0; 0; 0",
+                      Patterns::Anything(),
+                      "The obstacle's rigid translation as a function of "
+                      "time t (muParser, one expression per component, "
+                      "separated by ';'), from where its parameters put it. "
+                      "Example, pressing and then dragging: "
+                      "'0.1 * max(t - 1, 0); -0.01 * min(t, 1)'.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ContactOperator<dim>::ContactOperator(ParameterHandler    &prm,
+                                        const BoundaryNames &names)
+    : cone([&]() {
+      prm.enter_subsection("Contact");
+      const double mu = prm.get_double("Friction coefficient");
+      prm.leave_subsection();
+      return mu;
+    }())
+  {
+    prm.enter_subsection("Contact");
+    for (const std::string &item :
+         Input::split(prm.get("Contact boundaries"), ';'))
+      contact_boundaries.insert(
+        names.id("Contact/Contact boundaries", item));
+    prm.enter_subsection("Obstacle");
+    obstacle = PluginRegistry<Obstacle::Interface<dim>>::create(prm);
+    rigid_displacement =
+      std::make_unique<TimeFunction>("Contact/Obstacle/Rigid displacement",
+                                     prm.get("Rigid displacement"),
+                                     dim);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::setup(const ElasticBody<dim> &body,
+                              const BoundaryNames    &names)
+  {
+    nodes.clear();
+    tangents.clear();
+
+    const IndexSet &owned = body.locally_owned_dofs();
+    // Keyed by the first dof of the vertex: each vertex once, in dof order.
+    std::map<types::global_dof_index, Node> found;
+    std::map<types::global_dof_index, double> area;
+    std::set<types::boundary_id>            boundaries_with_candidates;
+    const FiniteElement<dim> &fe = body.get_dof_handler().get_fe();
+    FEFaceValues<dim>         face_values(fe,
+                                  QGauss<dim - 1>(2),
+                                  update_values | update_JxW_values);
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_boundaries.count(cell->face(f)->boundary_id()) > 0)
+            {
+              // Lumped areas: the integral of each vertex's shape function
+              // (component 0 of the vector-valued Q1 element) over the face.
+              face_values.reinit(cell, f);
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const unsigned int i = fe.component_to_system_index(0, v);
+                  double             integral = 0;
+                  for (const unsigned int q :
+                       face_values.quadrature_point_indices())
+                    integral += face_values.shape_value(i, q) * face_values.JxW(q);
+                  if (integral > 0)
+                    area[cell->vertex_dof_index(v, 0)] += integral;
+                }
+            }
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              contact_boundaries.count(face->boundary_id()) > 0)
+            for (const unsigned int v : face->vertex_indices())
+              {
+                Node node;
+                bool all_fixed = true;
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const auto g = face->vertex_dof_index(v, c);
+                    node.dofs[c] = g;
+                    node.free[c] = !body.get_constraints().is_constrained(g);
+                    all_fixed    = all_fixed && !node.free[c];
+                    if (owned.is_element(g))
+                      node.local_dofs[c] = owned.index_within_set(g);
+                  }
+                const auto first_dof = face->vertex_dof_index(v, 0);
+                if (all_fixed || !owned.is_element(first_dof))
+                  continue;
+                boundaries_with_candidates.insert(face->boundary_id());
+                node.position = face->vertex(v);
+                node.area     = area[first_dof];
+                found.emplace(first_dof, node);
+              }
+
+    const std::set<types::boundary_id> with_candidates =
+      Utilities::MPI::compute_set_union(boundaries_with_candidates,
+                                        body.get_mpi_communicator());
+    for (const types::boundary_id id : contact_boundaries)
+      if (with_candidates.count(id) == 0)
+        throw InputError("<Contact/Contact boundaries> = '" + names.name(id) +
+                         "': this boundary has no contact candidate node "
+                         "(all its nodes are held by <Boundary conditions/"
+                         "Fixed boundaries>); remove it from the list or free "
+                         "its nodes");
+
+    nodes.reserve(found.size());
+    for (const auto &[dof, node] : found)
+      nodes.push_back(node);
+    if (cone.mu > 0)
+      tangents.resize(nodes.size());
+    n_global = Utilities::MPI::sum<types::global_dof_index>(
+      nodes.size(), body.get_mpi_communicator());
+    mpi_communicator = body.get_mpi_communicator();
+    move_obstacle(obstacle_displacement(0.));
+
+    // The obstacle must not start inside the body.
+    double smallest_gap = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      smallest_gap = std::min(smallest_gap, reference_gap(j));
+    double extent = 0;
+    for (const Node &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        extent = std::max(extent, std::abs(node.position[d]));
+    extent = Utilities::MPI::max(extent, mpi_communicator);
+    const double overlap = -Utilities::MPI::min(smallest_gap, mpi_communicator);
+    if (overlap > 1e-12 * extent)
+      throw InputError("<Contact/Obstacle>: the obstacle starts inside the "
+                         "body, " + Input::to_text(overlap) +
+                         " deep (a negative gap); move it so that every gap "
+                         "is >= 0 at t = 0, for a plane its Point");
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::obstacle_displacement(const double t) const
+  {
+    Tensor<1, dim> displacement;
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement[d] = rigid_displacement->value(t, d);
+    return displacement;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::move_obstacle(const Tensor<1, dim> &displacement)
+  {
+    obstacle_shift = displacement;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const Tensor<1, dim> normal =
+          obstacle->outward_normal(nodes[j].position - displacement);
+        nodes[j].into_obstacle = -normal;
+        if (!tangents.empty())
+          tangents[j] = tangents_to<dim>(normal);
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_local(const unsigned int j, Tensor<1, dim> v) const
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        v[c] = 0;
+    Tensor<1, dim> local;
+    local[0] = nodes[j].into_obstacle * v;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        local[k + 1] = tangents[j][k] * v;
+    return local;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_cartesian(const unsigned int    j,
+                                     const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> x = v[0] * nodes[j].into_obstacle;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        x += v[k + 1] * tangents[j][k];
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        x[c] = 0;
+    return x;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::set_nodal_values(
+    const std::vector<Tensor<1, dim>> &values,
+    Vector                            &f) const
+  {
+    f = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      add_nodal_value(j, values[j], f);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::apply(const std::vector<Tensor<1, dim>> &r,
+                              Vector                            &f) const
+  {
+    f = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      add_nodal_value(j, to_cartesian(j, r[j]), f);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactOperator<dim>::normal_stiffness(
+    const TrilinosWrappers::SparseMatrix &K) const
+  {
+    std::vector<double> c(nodes.size(), 0.);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        Tensor<1, dim> normal;
+        normal[0]                = 1;
+        const Tensor<1, dim> t_n = to_cartesian(j, normal);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            if (t_n[a] != 0 && t_n[b] != 0)
+              c[j] += t_n[a] * K.el(nodes[j].dofs[a], nodes[j].dofs[b]) * t_n[b];
+      }
+    return c;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::largest_singular_value() const
+  {
+    // Candidates sit on distinct nodes, so T^T T is block diagonal with the
+    // blocks T_j^T T_j, and sigma_T^2 is the largest of their eigenvalues.
+    double largest = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        SymmetricTensor<2, dim> gram;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            Tensor<1, dim> e;
+            e[a]                           = 1;
+            const Tensor<1, dim> column_a  = to_cartesian(j, e);
+            for (unsigned int b = 0; b <= a; ++b)
+              {
+                Tensor<1, dim> f;
+                f[b]       = 1;
+                gram[a][b] = column_a * to_cartesian(j, f);
+              }
+          }
+        largest = std::max(largest, eigenvalues(gram)[0]);
+      }
+    return std::sqrt(Utilities::MPI::max(largest, mpi_communicator));
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::orthonormality_defect() const
+  {
+    const unsigned int n_columns = cone.mu > 0 ? dim : 1;
+    double             defect    = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      for (unsigned int a = 0; a < n_columns; ++a)
+        for (unsigned int b = 0; b < n_columns; ++b)
+          {
+            Tensor<1, dim> e, f;
+            e[a] = 1;
+            f[b] = 1;
+            defect = std::max(defect,
+                              std::abs(to_cartesian(j, e) * to_cartesian(j, f) -
+                                       (a == b ? 1. : 0.)));
+          }
+    return Utilities::MPI::max(defect, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  ContactOperator<dim>::memory_consumption() const
+  {
+    return nodes.capacity() * sizeof(Node) +
+           tangents.capacity() * sizeof(tangents[0]);
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactOperator<dim>::describe_boundaries(const BoundaryNames &names) const
+  {
+    std::string text;
+    for (const types::boundary_id id : contact_boundaries)
+      text += (text.empty() ? "" : ", ") + names.name(id);
+    return text;
+  }
+
+  template class ContactOperator<2>;
+  template class ContactOperator<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,393 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <frictional_contact/model/elastic_body.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  ElasticBody<dim>::ElasticBody(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const LinearElasticMaterial<dim>                &material,
+    const BoundaryConditions<dim>                   &conditions)
+    : material(material)
+    , conditions(conditions)
+    , mpi_communicator(triangulation.get_communicator())
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::setup()
+  {
+    dof_handler.distribute_dofs(fe);
+    owned_dofs    = dof_handler.locally_owned_dofs();
+    relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    hanging_node_constraints.close();
+    for (const auto &fixed : conditions.fixed_boundaries)
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               fixed.id,
+                                               Functions::ZeroFunction<dim>(dim),
+                                               constraints,
+                                               fixed.components);
+    // The increments of prescribed displacements are set by a lifting
+    // (prescribed_increment()); for the solves these dofs are held too.
+    prescribed_dofs.clear();
+    prescribed_dofs.set_size(dof_handler.n_dofs());
+    for (const auto &prescribed : conditions.prescribed_boundaries)
+      {
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 prescribed.id,
+                                                 Functions::ZeroFunction<dim>(dim),
+                                                 values,
+                                                 prescribed.components);
+        for (const auto &[dof, value] : values)
+          if (!constraints.is_constrained(dof) && owned_dofs.is_element(dof))
+            prescribed_dofs.add_index(dof);
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 prescribed.id,
+                                                 Functions::ZeroFunction<dim>(dim),
+                                                 constraints,
+                                                 prescribed.components);
+      }
+    prescribed_dofs.compress();
+    constraints.close();
+
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        std::vector<bool> mask(dim, false);
+        mask[c]           = true;
+        component_dofs[c] = DoFTools::extract_dofs(dof_handler, ComponentMask(mask));
+      }
+
+    types::global_dof_index n_free_here = 0;
+    for (const auto i : owned_dofs)
+      if (!constraints.is_constrained(i))
+        ++n_free_here;
+    n_free = Utilities::MPI::sum(n_free_here, mpi_communicator);
+
+    TrilinosWrappers::SparsityPattern sparsity(owned_dofs,
+                                               owned_dofs,
+                                               relevant_dofs,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    stiffness.reinit(sparsity);
+    load.reinit(owned_dofs, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEValues<dim>                                        &fe_values,
+    FEFaceValues<dim>                                    &fe_face_values,
+    FullMatrix<double>                                   &cell_matrix,
+    dealii::Vector<double>                               &cell_load) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const SymmetricTensor<4, dim>   &C             = material.stress_strain_tensor();
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+
+    fe_values.reinit(cell);
+    cell_matrix = 0;
+    cell_load   = 0;
+    std::vector<SymmetricTensor<2, dim>> strain(dofs_per_cell);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          strain[i] = fe_values[displacement].symmetric_gradient(i, q);
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const SymmetricTensor<2, dim> stress_i = C * strain[i];
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += (stress_i * strain[j]) * JxW;
+            cell_load(i) +=
+              conditions.body_force * fe_values[displacement].value(i, q) * JxW;
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary())
+        if (const auto t = conditions.tractions.find(face->boundary_id());
+            t != conditions.tractions.end())
+          {
+            fe_face_values.reinit(cell, face);
+            for (const unsigned int q : fe_face_values.quadrature_point_indices())
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_load(i) += t->second *
+                                fe_face_values[displacement].value(i, q) *
+                                fe_face_values.JxW(q);
+          }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble()
+  {
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    FEFaceValues<dim>     fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_JxW_values);
+
+    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
+    dealii::Vector<double> cell_load(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+    stiffness = 0;
+    load      = 0;
+    Tensor<1, dim> total_here;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            total_here[fe.system_to_component_index(i).first] += cell_load(i);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_load, dof_indices, stiffness, load);
+        }
+    stiffness.compress(VectorOperation::add);
+    load.compress(VectorOperation::add);
+    reference_total_load = Utilities::MPI::sum(total_here, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::internal_force(const Vector &u, Vector &force) const
+  {
+    if (conditions.prescribed_boundaries.empty())
+      {
+        // u is zero on all constrained dofs: the condensed K does it.
+        stiffness.vmult(force, u);
+        return;
+      }
+    Vector u_ghosted = make_ghosted_vector();
+    u_ghosted        = u;
+    element_forces(u_ghosted, 0., constraints, force);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::element_forces(const Vector                    &u_ghosted,
+                                   const double                     load_factor,
+                                   const AffineConstraints<double> &distribute,
+                                   Vector                          &force) const
+  {
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    FEFaceValues<dim>     fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_JxW_values);
+    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
+    dealii::Vector<double> cell_load(dofs_per_cell), cell_u(dofs_per_cell),
+      cell_force(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+    force = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
+          cell->get_dof_values(u_ghosted, cell_u);
+          cell_matrix.vmult(cell_force, cell_u);
+          cell_force.add(-load_factor, cell_load);
+          cell->get_dof_indices(dof_indices);
+          distribute.distribute_local_to_global(cell_force, dof_indices, force);
+        }
+    force.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticBody<dim>::support_reaction(const Vector &u,
+                                     const double  load_factor) const
+  {
+    // The force at a hanging node acts on the nodes it hangs from.
+    Vector residual(owned_dofs, mpi_communicator);
+    element_forces(u, load_factor, hanging_node_constraints, residual);
+
+    // Only the dofs held by a fixed boundary carry a support reaction.
+    Tensor<1, dim> reaction_here;
+    for (unsigned int c = 0; c < dim; ++c)
+      for (const auto g : component_dofs[c])
+        if (is_fixed(g))
+          reaction_here[c] += residual[g];
+    return Utilities::MPI::sum(reaction_here, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::prescribed_increment(const double t_old,
+                                         const double t_new,
+                                         Vector      &increment) const
+  {
+    increment = 0;
+    FunctionParser<dim> &u_D = *conditions.prescribed_displacement;
+    /// u_D(x, t_new) - u_D(x, t_old).
+    class Difference : public Function<dim>
+    {
+    public:
+      Difference(FunctionParser<dim> &u, const double t_old, const double t_new)
+        : Function<dim>(dim)
+        , u(u)
+        , t_old(t_old)
+        , t_new(t_new)
+      {}
+
+      double
+      value(const Point<dim> &p, const unsigned int c) const override
+      {
+        u.set_time(t_new);
+        const double after = u.value(p, c);
+        u.set_time(t_old);
+        return after - u.value(p, c);
+      }
+
+    private:
+      FunctionParser<dim> &u;
+      const double         t_old, t_new;
+    } difference(u_D, t_old, t_new);
+
+    for (const auto &prescribed : conditions.prescribed_boundaries)
+      {
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(
+          dof_handler, prescribed.id, difference, values, prescribed.components);
+        for (const auto &[dof, value] : values)
+          if (prescribed_dofs.is_element(dof))
+            increment[dof] = value;
+      }
+    increment.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  ElasticBody<dim>::rigid_body_modes() const
+  {
+    const unsigned int n_modes = dim * (dim + 1) / 2;
+    std::vector<std::vector<double>> modes(
+      n_modes, std::vector<double>(owned_dofs.n_elements(), 0.));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<dim> &x = cell->vertex(v);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const auto g = cell->vertex_dof_index(v, c);
+                if (!owned_dofs.is_element(g))
+                  continue;
+                const auto row = owned_dofs.index_within_set(g);
+                modes[c][row] = 1.;
+                if (dim == 2)
+                  modes[2][row] = (c == 0 ? -x[1] : x[0]);
+                else
+                  {
+                    // Rotations about the x, y and z axes.
+                    const unsigned int a = (c + 1) % dim, b = (c + 2) % dim;
+                    modes[dim + b][row] = x[a];
+                    modes[dim + a][row] = -x[b];
+                  }
+              }
+          }
+    return modes;
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::check_rigid_body_motion_is_prevented() const
+  {
+    // The fixed dofs prevent every rigid motion iff the rigid-body modes,
+    // restricted to the fixed dofs, are linearly independent: their Gram
+    // matrix is then positive definite.
+    const std::vector<std::vector<double>> modes   = rigid_body_modes();
+    const unsigned int                     n_modes = modes.size();
+    std::vector<double>                    gram(n_modes * n_modes, 0.);
+    unsigned int                           row = 0;
+    for (const auto g : owned_dofs)
+      {
+        if (is_fixed(g))
+          for (unsigned int a = 0; a < n_modes; ++a)
+            for (unsigned int b = 0; b < n_modes; ++b)
+              gram[a * n_modes + b] += modes[a][row] * modes[b][row];
+        ++row;
+      }
+    Utilities::MPI::sum(gram, mpi_communicator, gram);
+
+    LAPACKFullMatrix<double> matrix(n_modes, n_modes);
+    double                   scale = 0;
+    for (unsigned int a = 0; a < n_modes; ++a)
+      for (unsigned int b = 0; b < n_modes; ++b)
+        {
+          matrix(a, b) = gram[a * n_modes + b];
+          scale        = std::max(scale, std::abs(matrix(a, b)));
+        }
+    matrix.compute_eigenvalues();
+    double smallest = std::numeric_limits<double>::max();
+    for (unsigned int a = 0; a < n_modes; ++a)
+      smallest = std::min(smallest, matrix.eigenvalue(a).real());
+    if (!(scale > 0) || smallest < 1e-10 * scale)
+      throw InputError(
+        "<Boundary conditions/Fixed boundaries> does not hold the body against "
+        "rigid-body motion (translation or rotation): fix more boundaries or "
+        "more components, e.g. 'set Fixed boundaries = left'");
+  }
+
+  template class ElasticBody<2>;
+  template class ElasticBody<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,152 @@
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/model/mesh_refinement.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "How often every cell of the geometry's mesh is split "
+                      "in 2^dim (0 to 12).");
+    prm.declare_entry("Local refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "After the global refinements, how often the cells "
+                      "near Refinement center are split again (0 to 12), "
+                      "for example around the contact zone. Hanging nodes "
+                      "between the levels are constrained; keep them out "
+                      "of the contact zone (they are not contact "
+                      "candidates).");
+    prm.declare_entry("Refinement center",
+                      dim == 2 ? "0, 0" : "0, 0, 0",
+                      Patterns::Anything(),
+                      "Centre of the region of local refinement (length).");
+    prm.declare_entry("Refinement radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Cells reaching closer than this to Refinement center "
+                      "are refined locally (length, >= 0).");
+  }
+
+
+
+  template <int dim>
+  MeshRefinement<dim>::MeshRefinement(ParameterHandler &prm)
+    : global_refinements(prm.get_integer("Global refinements"))
+    , local_refinements(prm.get_integer("Local refinements"))
+    , local_center(Input::parse_vector<dim>("Geometry/Refinement center",
+                                            prm.get("Refinement center")))
+    , local_radius(prm.get_double("Refinement radius"))
+  {
+    if (local_refinements > 0 && !(local_radius > 0))
+      Input::fail("Geometry/Refinement radius",
+                  prm.get("Refinement radius"),
+                  "Local refinements > 0 needs a positive radius");
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::refine(parallel::distributed::Triangulation<dim> &mesh,
+                              const unsigned int built_in_refinements) const
+  {
+    const unsigned int refinements = built_in_refinements + global_refinements;
+    check_memory(mesh.n_global_active_cells() * std::pow(2., dim * refinements),
+                 mesh.get_communicator());
+    mesh.refine_global(refinements);
+    refine_near_center(mesh);
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
+  {
+    // Measured: about 3 kB per cell in 2D and 14 kB in 3D (matrix, AMG,
+    // vectors, mesh), on top of some 170 MB for the libraries.
+    const double needed    = n_cells * (dim == 2 ? 3e3 : 1.4e4);
+    double       available = 0;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ifstream meminfo("/proc/meminfo");
+        std::string   key;
+        double        kilobytes;
+        while (meminfo >> key >> kilobytes)
+          if (key == "MemAvailable:")
+            available = 1024 * kilobytes;
+          else
+            meminfo.ignore(1000, '\n');
+      }
+    available = Utilities::MPI::broadcast(comm, available, 0);
+    if (available > 0 && needed > 0.8 * available)
+      throw InputError("<Geometry>: the mesh would have " +
+                       Input::to_text(n_cells) + " cells and need about " +
+                       Input::to_text(needed / 1e9) + " GB, but " +
+                       Input::to_text(available / 1e9) +
+                       " GB are available; use fewer cells (repetitions, "
+                       "Global refinements, Local refinements)");
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::refine_near_center(
+    parallel::distributed::Triangulation<dim> &mesh) const
+  {
+    if (local_refinements == 0)
+      return;
+    const MPI_Comm comm = mesh.get_communicator();
+    const auto     near = [&](const auto &cell) {
+      return cell->center().distance(local_center) <
+             local_radius + 0.5 * cell->diameter();
+    };
+    // Before each level, the final size is estimated from the cells near
+    // the center now: each becomes 2^dim per level left, in a band around
+    // the disc that narrows with the cells. Measured on the Hertz scenes,
+    // the estimate is within 10 % in 2D and up to 1.9 times low in 3D
+    // (p4est's 2:1 balance adds cells) from the coarse mesh, and closer at
+    // every level, so a mesh that cannot fit is refused while the mesh made
+    // so far is still small.
+    for (unsigned int i = 0; i < local_refinements; ++i)
+      {
+        double n_near = 0, diameter = 0;
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned() && near(cell))
+            {
+              ++n_near;
+              diameter = std::max(diameter, cell->diameter());
+            }
+        n_near   = Utilities::MPI::sum(n_near, comm);
+        diameter = Utilities::MPI::max(diameter, comm);
+        const unsigned int levels_left = local_refinements - i;
+        const double       band =
+          std::pow((local_radius + 0.5 * diameter / std::pow(2., levels_left)) /
+                     (local_radius + 0.5 * diameter),
+                   dim);
+        check_memory(mesh.n_global_active_cells() +
+                       n_near * (std::pow(2., dim * levels_left) - 1) * band,
+                     comm);
+
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned() && near(cell))
+            cell->set_refine_flag();
+        mesh.execute_coarsening_and_refinement();
+      }
+    check_memory(mesh.n_global_active_cells(), comm);
+  }
+
+  template class MeshRefinement<2>;
+  template class MeshRefinement<3>;
+} // namespace FrictionalContact

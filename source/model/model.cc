@@ -1,0 +1,136 @@
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/model/model.h>
+
+#include <ostream>
+#include <set>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// Boundary ids present in the distributed mesh (on any rank).
+    template <int dim>
+    std::set<types::boundary_id>
+    boundary_ids_in(const parallel::distributed::Triangulation<dim> &mesh)
+    {
+      std::set<types::boundary_id> ids;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              ids.insert(face->boundary_id());
+      return Utilities::MPI::compute_set_union(ids, mesh.get_communicator());
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Model<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    PluginRegistry<Geometry::Interface<dim>>::declare_parameters(
+      prm, "box", "The shape of the elastic body and its boundary names.");
+    MeshRefinement<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+
+    LinearElasticMaterial<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm);
+    ContactOperator<dim>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Model<dim>::Model(ParameterHandler &prm, const MPI_Comm comm)
+    : triangulation(comm)
+  {
+    prm.enter_subsection("Geometry");
+    geometry   = PluginRegistry<Geometry::Interface<dim>>::create(prm);
+    refinement = std::make_unique<MeshRefinement<dim>>(prm);
+    prm.leave_subsection();
+
+    geometry->create_coarse_mesh(triangulation);
+    boundary_names = BoundaryNames(geometry->boundary_names(),
+                                   boundary_ids_in(triangulation));
+    material = std::make_unique<LinearElasticMaterial<dim>>(prm);
+    boundary_conditions =
+      std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
+    body = std::make_unique<ElasticBody<dim>>(triangulation,
+                                              *material,
+                                              *boundary_conditions);
+    contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
+  }
+
+
+
+  template <int dim>
+  void
+  Model<dim>::setup(
+    const std::function<void(parallel::distributed::Triangulation<dim> &)>
+      &load_mesh)
+  {
+    if (load_mesh)
+      load_mesh(triangulation);
+    else
+      refinement->refine(triangulation, geometry->n_built_in_refinements());
+
+    body->setup();
+    // Every rank must own unknowns: the solvers' collective steps
+    // (PARPACK, AMG set-up) do not work with an empty share.
+    const MPI_Comm                comm         = get_mpi_communicator();
+    const types::global_dof_index fewest_owned = Utilities::MPI::min(
+      body->get_dof_handler().n_locally_owned_dofs(), comm);
+    if (fewest_owned == 0)
+      throw InputError(
+        "the mesh has " + std::to_string(triangulation.n_global_active_cells()) +
+        " cells, too few for " +
+        std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
+        " MPI ranks (a rank would own no unknowns): run on fewer ranks, or "
+        "use a finer mesh (repetitions, <Geometry/Global refinements>)");
+    if (contact->active())
+      contact->setup(*body, boundary_names);
+  }
+
+
+
+  template <int dim>
+  void
+  Model<dim>::assemble()
+  {
+    body->assemble();
+    body->check_rigid_body_motion_is_prevented();
+  }
+
+
+
+  template <int dim>
+  void
+  Model<dim>::print_summary(const ConditionalOStream &out) const
+  {
+    out << "Scene: " << dim << "D, " << material->describe() << std::endl;
+    out << "Mesh: " << triangulation.n_global_active_cells() << " cells; d = "
+        << body->n_free_dofs() << " free displacement dofs of "
+        << body->get_dof_handler().n_dofs() << std::endl;
+    if (contact->active())
+      {
+        const double      mu    = contact->friction_coefficient();
+        const std::size_t bytes = Utilities::MPI::sum(
+          contact->memory_consumption(), get_mpi_communicator());
+        out << "Contact: "
+            << (mu > 0 ? "frictional (mu = " + Input::to_text(mu) + ")" :
+                         std::string("frictionless (no tangential operator)"))
+            << ", c = " << contact->n_candidates() << " candidates on "
+            << contact->describe_boundaries(boundary_names) << "; " << bytes
+            << " bytes of contact data" << std::endl;
+      }
+    else
+      out << "Contact: none (one linear elastic solve)" << std::endl;
+  }
+
+  template class Model<2>;
+  template class Model<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,228 @@
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/base/files.h>
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/postprocess/manager.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace Postprocess
+  {
+    namespace
+    {
+      /// The order of the statistics columns.
+      const char *const default_postprocessors =
+        "solver statistics, contact statistics, displacement statistics, "
+        "visualization, convergence history, fclib export";
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      using Registry = PluginRegistry<Interface<dim>>;
+      std::string names;
+      for (const std::string &name : Registry::names())
+        names += (names.empty() ? "" : "|") + name;
+      prm.enter_subsection("Output");
+      prm.declare_entry("Postprocessors",
+                        default_postprocessors,
+                        Patterns::MultipleSelection(names),
+                        "What runs after each increment, in this order (the "
+                        "order of their columns in the statistics file). "
+                        "Each writes only what its entries below ask for.");
+      prm.declare_entry("Write statistics",
+                        "true",
+                        Patterns::Bool(),
+                        "Write the file 'statistics': one row per increment "
+                        "(columns are described in its header).");
+      prm.declare_entry("Checkpoint every",
+                        "1",
+                        Patterns::Integer(0),
+                        "With more than one increment, save the state for "
+                        "<Resume computation> after every n-th increment and "
+                        "the last one (0: never).");
+      Registry::declare_all_here(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    Manager<dim>::Manager(ParameterHandler  &prm,
+                          const std::string &output_directory,
+                          const MPI_Comm     comm)
+      : statistics_file(output_directory + "/statistics")
+      , comm(comm)
+    {
+      prm.enter_subsection("Output");
+      write_statistics = prm.get_bool("Write statistics");
+      checkpoint_every = prm.get_integer("Checkpoint every");
+      for (const std::string &name :
+           Input::split(prm.get("Postprocessors"), ','))
+        {
+          postprocessors.push_back(
+            PluginRegistry<Interface<dim>>::create_unparsed(name));
+          postprocessors.back()->parse_parameters(prm, output_directory, comm);
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::check_increments(const unsigned int n_increments) const
+    {
+      for (const auto &postprocessor : postprocessors)
+        postprocessor->check_increments(n_increments);
+    }
+
+
+
+    template <int dim>
+    std::string
+    Manager<dim>::describe() const
+    {
+      std::string text;
+      for (const auto &postprocessor : postprocessors)
+        {
+          const std::string part = postprocessor->describe();
+          if (!part.empty())
+            text += (text.empty() ? "" : ", ") + part;
+        }
+      if (write_statistics)
+        text += (text.empty() ? "" : ", ") + std::string("statistics");
+      return text;
+    }
+
+
+
+    template <int dim>
+    bool
+    Manager<dim>::writes_files() const
+    {
+      bool any = write_statistics;
+      for (const auto &postprocessor : postprocessors)
+        any = any || postprocessor->writes_files();
+      return any;
+    }
+
+
+
+    template <int dim>
+    bool
+    Manager<dim>::needs_history() const
+    {
+      bool any = false;
+      for (const auto &postprocessor : postprocessors)
+        any = any || postprocessor->needs_history();
+      return any;
+    }
+
+
+
+    template <int dim>
+    bool
+    Manager<dim>::checkpoint_due(const unsigned int increment,
+                                 const unsigned int n_increments) const
+    {
+      return n_increments > 1 && checkpoint_every > 0 &&
+             (increment % checkpoint_every == 0 || increment == n_increments);
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::execute(const IncrementResult<dim> &result)
+    {
+      const Model<dim> &model = result.model;
+      const auto       &contact = model.get_contact();
+      Columns           columns = {
+        {"Increment", std::uint64_t(result.increment)},
+        {"Time", result.time},
+        {"Load factor", result.load_factor},
+        {"Free dofs d", std::uint64_t(model.get_body().n_free_dofs())},
+        {"Contact candidates c",
+         std::uint64_t(contact.active() ? contact.n_candidates() : 0)}};
+      for (const auto &postprocessor : postprocessors)
+        for (Column &column : postprocessor->execute(result))
+          columns.push_back(std::move(column));
+
+      for (const Column &column : columns)
+        if (const auto *count = std::get_if<std::uint64_t>(&column.value))
+          table.add_value(column.label, *count);
+        else
+          {
+            table.add_value(column.label, std::get<double>(column.value));
+            if (column.scientific)
+              {
+                table.set_scientific(column.label, true);
+                table.set_precision(column.label, 10);
+              }
+          }
+      if (write_statistics)
+        run_on_root(comm, [&]() {
+          std::ostringstream out;
+          table.write_text(out,
+                           TableHandler::table_with_separate_column_description);
+          write_file_atomically(statistics_file, out.str());
+        });
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::execute_failed(const IncrementResult<dim> &result)
+    {
+      for (const auto &postprocessor : postprocessors)
+        postprocessor->execute_failed(result);
+    }
+
+
+
+    template <int dim>
+    std::string
+    Manager<dim>::save_state() const
+    {
+      std::vector<std::string> states;
+      for (const auto &postprocessor : postprocessors)
+        states.push_back(postprocessor->save_state());
+      std::ostringstream            text;
+      boost::archive::text_oarchive archive(text);
+      archive << table << states;
+      return text.str();
+    }
+
+
+
+    template <int dim>
+    void
+    Manager<dim>::load_state(const std::string &state)
+    {
+      std::istringstream            text(state);
+      boost::archive::text_iarchive archive(text);
+      std::vector<std::string>      states;
+      archive >> table >> states;
+      if (states.size() != postprocessors.size())
+        throw InputError("<Resume computation>: the checkpoint was written "
+                         "with other <Output/Postprocessors>");
+      for (unsigned int i = 0; i < states.size(); ++i)
+        postprocessors[i]->load_state(states[i]);
+    }
+
+    template class Manager<2>;
+    template class Manager<3>;
+  } // namespace Postprocess
+} // namespace FrictionalContact

@@ -1,0 +1,459 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <frictional_contact/base/files.h>
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/postprocess/output_writer.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <unordered_map>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// Rows of all ranks on rank 0, sorted by their leading dim coordinates
+    /// (z, then y, then x), written under @p header.
+    void
+    write_sorted_table(const std::string              &file_name,
+                       const std::string              &header,
+                       const std::vector<std::string> &rows,
+                       const unsigned int              dim,
+                       const MPI_Comm                  comm)
+    {
+      // Sorted on rank 0 (the others gather nothing), written there.
+      const auto all = Utilities::MPI::gather(comm, rows, 0);
+      std::vector<std::pair<std::vector<double>, const std::string *>> sorted;
+      for (const auto &rank_rows : all)
+        for (const std::string &row : rank_rows)
+          {
+            std::vector<double> key;
+            std::istringstream  in(row);
+            std::string         field;
+            for (unsigned int d = 0; d < dim && std::getline(in, field, ','); ++d)
+              key.insert(key.begin(), std::stod(field));
+            sorted.emplace_back(key, &row);
+          }
+      std::sort(sorted.begin(), sorted.end(), [](const auto &a, const auto &b) {
+        return a.first < b.first;
+      });
+      std::string text = header + "\n";
+      for (const auto &[key, row] : sorted)
+        text += *row + "\n";
+      run_on_root(comm, [&]() { write_file_atomically(file_name, text); });
+    }
+
+    /// The von Mises equivalent stress of the displacement field (in 2D
+    /// with the out-of-plane stress of plane stress or plane strain).
+    template <int dim>
+    class VonMisesStress : public DataPostprocessorScalar<dim>
+    {
+    public:
+      explicit VonMisesStress(const LinearElasticMaterial<dim> &material)
+        : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
+        , material(material)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<dealii::Vector<double>>        &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            Tensor<2, dim> gradient;
+            for (unsigned int d = 0; d < dim; ++d)
+              gradient[d] = inputs.solution_gradients[q][d];
+            const SymmetricTensor<2, dim> stress =
+              material.stress_strain_tensor() * symmetrize(gradient);
+            SymmetricTensor<2, 3> s;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                s[i][j] = stress[i][j];
+            if (dim == 2 && !material.plane_stress)
+              s[2][2] = material.poissons_ratio * (stress[0][0] + stress[1][1]);
+            computed[q](0) = std::sqrt(1.5 * deviator(s) * deviator(s));
+          }
+      }
+
+    private:
+      const LinearElasticMaterial<dim> &material;
+    };
+
+    const char *state_name(const ContactState state)
+    {
+      switch (state)
+        {
+          case ContactState::free:
+            return "free";
+          case ContactState::stick:
+            return "stick";
+          default:
+            return "slip";
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Write VTU/PVTU files of every increment for ParaView "
+                      "(displacement, contact reactions, gap, contact state), "
+                      "listed with their times in solution.pvd.");
+    prm.declare_entry("Write vtu every",
+                      "1",
+                      Patterns::Integer(1),
+                      "Write the VTU files of every n-th increment (and of "
+                      "the last one).");
+    prm.declare_entry("Write csv tables",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write contact-NNNNN.csv (every candidate: "
+                      "position, displacement, normal displacement increment, "
+                      "gap, reactions, state) and displacement-NNNNN.csv "
+                      "(every vertex). Gathered on one rank: for small "
+                      "problems.");
+    prm.declare_entry("Number of grouped files",
+                      "1",
+                      Patterns::Integer(0),
+                      "VTU files per increment (0: one per MPI rank).");
+  }
+
+
+
+  template <int dim>
+  OutputWriter<dim>::OutputWriter()
+    : scalar_fe(1)
+  {}
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::parse_parameters(ParameterHandler  &prm,
+                                      const std::string &output_directory,
+                                      const MPI_Comm)
+  {
+    directory   = output_directory;
+    write_vtu   = prm.get_bool("Write vtu");
+    write_csv   = prm.get_bool("Write csv tables");
+    write_every = prm.get_integer("Write vtu every");
+    n_groups    = prm.get_integer("Number of grouped files");
+  }
+
+
+
+  template <int dim>
+  Postprocess::Columns
+  OutputWriter<dim>::execute(const Postprocess::IncrementResult<dim> &result)
+  {
+    const Model<dim> &model = result.model;
+    write(result.increment,
+          result.time,
+          result.last(),
+          model.get_body(),
+          model.get_contact(),
+          model.get_material(),
+          result.state.u,
+          result.outcome.results);
+    return {};
+  }
+
+
+
+  template <int dim>
+  std::string
+  OutputWriter<dim>::save_state() const
+  {
+    std::ostringstream            text;
+    boost::archive::text_oarchive archive(text);
+    archive << times_and_names;
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::load_state(const std::string &state)
+  {
+    std::istringstream            text(state);
+    boost::archive::text_iarchive archive(text);
+    archive >> times_and_names;
+  }
+
+
+
+  template <int dim>
+  std::string
+  OutputWriter<dim>::describe() const
+  {
+    std::string text;
+    if (write_vtu)
+      text += write_every == 1 ? "vtu every increment" :
+                                 "vtu every " + std::to_string(write_every) +
+                                   " increments";
+    if (write_csv)
+      text += std::string(text.empty() ? "" : ", ") + "csv tables";
+    return text;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write(const unsigned int                increment,
+                           const double                      time,
+                           const bool                        last_increment,
+                           const ElasticBody<dim>           &body,
+                           const ContactOperator<dim>       &contact,
+                           const LinearElasticMaterial<dim> &material,
+                           const Vector                     &u,
+                           const ContactResults<dim>        &results)
+  {
+    const bool vtu_due =
+      write_vtu && (increment % write_every == 0 || last_increment);
+    if (!vtu_due && !write_csv)
+      return;
+    const MPI_Comm comm = body.get_mpi_communicator();
+    run_on_root(comm, [&]() {
+      std::filesystem::create_directories(directory + "/solution");
+    });
+    if (vtu_due)
+      write_vtu_files(increment, time, last_increment, body, contact, material, u, results);
+    if (write_csv)
+      write_csv_files(increment, body, contact, u, results);
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_vtu_files(const unsigned int                increment,
+                                     const double                      time,
+                                     const bool                        last_increment,
+                                     const ElasticBody<dim>           &body,
+                                     const ContactOperator<dim>       &contact,
+                                     const LinearElasticMaterial<dim> &material,
+                                     const Vector                     &u,
+                                     const ContactResults<dim>        &results)
+  {
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    const MPI_Comm         comm        = body.get_mpi_communicator();
+    const auto &triangulation = dof_handler.get_triangulation();
+    if (scalar_dof_handler.n_dofs() == 0)
+      {
+        scalar_dof_handler.reinit(triangulation);
+        scalar_dof_handler.distribute_dofs(scalar_fe);
+      }
+
+    Vector u_ghosted = body.make_ghosted_vector();
+    u_ghosted        = u;
+
+    // Nodal contact forces T r in Cartesian components.
+    Vector force = body.make_vector(), force_ghosted = body.make_ghosted_vector();
+    Vector increment_force_ghosted = body.make_ghosted_vector();
+    contact.apply(results.reaction, force);
+    force_ghosted = force;
+    contact.apply(results.reaction_increment, force);
+    increment_force_ghosted = force;
+
+    // Gap and state at the vertices: the solver's linearised gap at the
+    // candidates, the signed distance of the displaced vertex elsewhere.
+    std::unordered_map<types::global_dof_index, unsigned int> candidate;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      candidate[contact.first_dof(j)] = j;
+    const IndexSet scalar_owned = scalar_dof_handler.locally_owned_dofs();
+    const IndexSet scalar_relevant =
+      DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
+    Vector gap(scalar_owned, comm), state(scalar_owned, comm),
+      pressure(scalar_owned, comm);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
+            &triangulation, cell->level(), cell->index(), &scalar_dof_handler);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto s = scalar_cell->vertex_dof_index(v, 0);
+              if (!scalar_owned.is_element(s))
+                continue;
+              const auto it = candidate.find(cell->vertex_dof_index(v, 0));
+              if (it != candidate.end())
+                {
+                  gap[s]   = results.gap[it->second];
+                  state[s] = static_cast<double>(results.state[it->second]);
+                  pressure[s] = results.pressure[it->second];
+                }
+              else
+                {
+                  Point<dim> x = cell->vertex(v);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    x[c] += u_ghosted[cell->vertex_dof_index(v, c)];
+                  gap[s]   = contact.active() ? contact.distance_to_obstacle(x) : 0.;
+                  state[s] = -1;
+                }
+            }
+        }
+    gap.compress(VectorOperation::insert);
+    state.compress(VectorOperation::insert);
+    pressure.compress(VectorOperation::insert);
+    Vector gap_ghosted(scalar_owned, scalar_relevant, comm);
+    Vector state_ghosted(scalar_owned, scalar_relevant, comm);
+    Vector pressure_ghosted(scalar_owned, scalar_relevant, comm);
+    gap_ghosted      = gap;
+    state_ghosted    = state;
+    pressure_ghosted = pressure;
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(u_ghosted,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
+    data_out.add_data_vector(force_ghosted,
+                             std::vector<std::string>(dim, "contact_reaction"),
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
+    data_out.add_data_vector(increment_force_ghosted,
+                             std::vector<std::string>(dim,
+                                                      "contact_reaction_increment"),
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
+    const VonMisesStress<dim> von_mises(material);
+    data_out.add_data_vector(u_ghosted, von_mises);
+    data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
+    data_out.add_data_vector(scalar_dof_handler,
+                             state_ghosted,
+                             "contact_state");
+    data_out.add_data_vector(scalar_dof_handler,
+                             pressure_ghosted,
+                             "contact_pressure");
+    dealii::Vector<float> subdomain(triangulation.n_active_cells());
+    subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches();
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle = increment;
+    data_out.set_flags(flags);
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      directory + "/solution/", "solution", increment, comm, 5, n_groups);
+
+    times_and_names.emplace_back(time, "solution/" + pvtu);
+    // A time series only for a loading history.
+    if (!(increment == 1 && last_increment))
+      run_on_root(comm, [&]() {
+        std::ostringstream pvd;
+        DataOutBase::write_pvd_record(pvd, times_and_names);
+        write_file_atomically(directory + "/solution.pvd", pvd.str());
+      });
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_csv_files(const unsigned int          increment,
+                                     const ElasticBody<dim>     &body,
+                                     const ContactOperator<dim> &contact,
+                                     const Vector               &u,
+                                     const ContactResults<dim>  &results) const
+  {
+    const MPI_Comm comm = body.get_mpi_communicator();
+    const char    *axis = "xyz";
+    auto           number = [](std::ostringstream &out, const double value) {
+      out << ',' << std::setprecision(17) << value;
+    };
+    std::ostringstream suffix;
+    suffix << std::setw(5) << std::setfill('0') << increment << ".csv";
+
+    std::string header;
+    for (unsigned int d = 0; d < dim; ++d)
+      header += std::string(d == 0 ? "" : ",") + axis[d];
+    std::string displacement_header = header;
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement_header += std::string(",u") + axis[d];
+
+    std::vector<std::string> rows;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        std::ostringstream row;
+        row << std::setprecision(17) << contact.position(j)[0];
+        for (unsigned int d = 1; d < dim; ++d)
+          number(row, contact.position(j)[d]);
+        const Tensor<1, dim> u_j = contact.nodal_value(j, u);
+        for (unsigned int d = 0; d < dim; ++d)
+          number(row, u_j[d]);
+        number(row, results.local_displacement[j][0]);
+        number(row, results.gap[j]);
+        for (unsigned int d = 0; d < dim; ++d)
+          number(row, results.reaction[j][d]);
+        number(row, contact.nodal_area(j));
+        number(row, results.pressure[j]);
+        row << ',' << state_name(results.state[j]);
+        rows.push_back(row.str());
+      }
+    std::string contact_header = displacement_header + ",un,gap,rn";
+    for (unsigned int d = 1; d < dim; ++d)
+      contact_header += ",rt" + std::to_string(d);
+    write_sorted_table(directory + "/contact-" + suffix.str(),
+                       contact_header + ",area,pressure,state",
+                       rows,
+                       dim,
+                       comm);
+
+    rows.clear();
+    const IndexSet &owned = body.locally_owned_dofs();
+    const double   *values = u.begin();
+    std::set<types::global_dof_index> done;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto first = cell->vertex_dof_index(v, 0);
+            if (!owned.is_element(first) || !done.insert(first).second)
+              continue;
+            std::ostringstream row;
+            row << std::setprecision(17) << cell->vertex(v)[0];
+            for (unsigned int d = 1; d < dim; ++d)
+              number(row, cell->vertex(v)[d]);
+            for (unsigned int d = 0; d < dim; ++d)
+              number(row,
+                     values[owned.index_within_set(cell->vertex_dof_index(v, d))]);
+            rows.push_back(row.str());
+          }
+    write_sorted_table(directory + "/displacement-" + suffix.str(),
+                       displacement_header,
+                       rows,
+                       dim,
+                       comm);
+  }
+
+  FRICTIONAL_CONTACT_REGISTER_PLUGIN(
+    Postprocess::Interface,
+    OutputWriter,
+    "visualization",
+    "VTU/PVTU files for ParaView with solution.pvd, and CSV tables of the "
+    "candidates and vertices, as the entries Write vtu and Write csv tables "
+    "ask for.")
+} // namespace FrictionalContact

@@ -1,0 +1,48 @@
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/postprocess/interface.h>
+
+namespace FrictionalContact
+{
+  namespace Postprocess
+  {
+    /// The columns of the contact solve: iterations, linear iterations,
+    /// AMG set-ups, wall time and the paper's three residuals.
+    template <int dim>
+    class SolverStatistics : public Interface<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
+      void
+      parse_parameters(ParameterHandler &,
+                       const std::string &,
+                       const MPI_Comm) override
+      {}
+
+      Columns
+      execute(const IncrementResult<dim> &result) override
+      {
+        const SolveStatistics &solve = result.outcome.statistics;
+        return {{"Contact solver iterations", std::uint64_t(solve.iterations)},
+                {"CG iterations", std::uint64_t(solve.linear_iterations)},
+                {"AMG setups", std::uint64_t(solve.amg_setups)},
+                {"Solve wall time (s)", solve.seconds},
+                {"Force balance residual", solve.residuals.force_balance, true},
+                {"Complementarity residual",
+                 solve.residuals.complementarity,
+                 true},
+                {"Penetration residual", solve.residuals.penetration, true}};
+      }
+    };
+
+    FRICTIONAL_CONTACT_REGISTER_PLUGIN(
+      Interface,
+      SolverStatistics,
+      "solver statistics",
+      "Statistics columns of the contact solve: its iterations, the Krylov "
+      "iterations of its linear solves (column 'CG iterations', GMRES "
+      "included), AMG set-ups, wall time and the three residuals.")
+  } // namespace Postprocess
+} // namespace FrictionalContact

@@ -1,0 +1,54 @@
+#include <frictional_contact/solvers/contact_problem.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  Residuals
+  compute_residuals(const IncrementalProblem<dim>       &problem,
+                    const TrilinosWrappers::MPI::Vector &du,
+                    const TrilinosWrappers::MPI::Vector &K_du,
+                    const TrilinosWrappers::MPI::Vector &T_r,
+                    const std::vector<Tensor<1, dim>>   &r,
+                    TrilinosWrappers::MPI::Vector       &scratch)
+  {
+    scratch = K_du;
+    scratch -= problem.load;
+    scratch -= T_r;
+
+    const ContactMap<dim>      &contact = problem.contact;
+    const double                mu      = contact.friction_coefficient();
+    double local[2]                     = {0., 0.};
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
+        const double         g_j = problem.gaps[j];
+        Tensor<1, dim>       v   = u_j;
+        v[0] = -g_j - mu * FrictionCone<dim>::tangential_norm(u_j) + u_j[0];
+        local[0] += v * r[j];
+        local[1] += std::pow(std::min(g_j - u_j[0], 0.), 2);
+      }
+    double global[2];
+    Utilities::MPI::sum(local, du.get_mpi_communicator(), global);
+
+    Residuals residuals;
+    residuals.force_balance   = scratch.l2_norm();
+    residuals.complementarity = std::abs(global[0]);
+    residuals.penetration     = std::sqrt(global[1]);
+    return residuals;
+  }
+
+  template Residuals
+  compute_residuals<2>(const IncrementalProblem<2> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const std::vector<Tensor<1, 2>> &,
+                       TrilinosWrappers::MPI::Vector &);
+  template Residuals
+  compute_residuals<3>(const IncrementalProblem<3> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const std::vector<Tensor<1, 3>> &,
+                       TrilinosWrappers::MPI::Vector &);
+} // namespace FrictionalContact

@@ -1,0 +1,61 @@
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/solvers/contact_solver_parameters.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  ContactSolverParameters<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    PluginRegistry<ContactSolver<dim>>::declare_parameters(
+      prm,
+      "semismooth Newton",
+      "The method that solves each incremental contact problem.",
+      "Method");
+    prm.declare_entry("Report every",
+                      "0",
+                      Patterns::Integer(0),
+                      "Print the residuals every this many iterations of the "
+                      "contact solver (0: only one line per increment).");
+    prm.declare_entry("Eigenvalue tolerance",
+                      "1e-8",
+                      Patterns::Double(0., 1.),
+                      "Relative accuracy of mu_pi, the smallest eigenvalue "
+                      "of K, which sets the acceleration of Algorithm 2.");
+    prm.declare_entry("Try the elastic solution first",
+                      "true",
+                      Patterns::Bool(),
+                      "Before the contact iteration of an increment, solve "
+                      "K du = p once: if no candidate then reaches the "
+                      "obstacle, this is the solution (every node free, "
+                      "r = 0) and the iteration is skipped. Algorithm 2 "
+                      "converges very slowly when nothing touches.");
+    prm.declare_entry("Lanczos vectors",
+                      "20",
+                      Patterns::Integer(4),
+                      "Lanczos vectors PARPACK keeps while computing mu_pi "
+                      "(>= 4).");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ContactSolverParameters<dim>::ContactSolverParameters(
+    ParameterHandler         &prm,
+    const ConditionalOStream &pcout)
+  {
+    prm.enter_subsection("Contact solver");
+    method_name = prm.get("Method");
+    method      = PluginRegistry<ContactSolver<dim>>::create(prm, "Method");
+    method->set_output(pcout, prm.get_integer("Report every"));
+    eigenvalue_tolerance = prm.get_double("Eigenvalue tolerance");
+    lanczos_vectors      = prm.get_integer("Lanczos vectors");
+    try_elastic_first    = prm.get_bool("Try the elastic solution first");
+    prm.leave_subsection();
+  }
+
+  template struct ContactSolverParameters<2>;
+  template struct ContactSolverParameters<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,254 @@
+#include <deal.II/base/timer.h>
+
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/solvers/primal_dual_solver.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  PrimalDualSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Scaling",
+                      "problem",
+                      Patterns::Selection("problem|paper"),
+                      "paper: Initial alpha and Tolerance are absolute, in "
+                      "the units of the problem, as published (alpha_0 = 0.1 "
+                      "and |du_{k+1} - du_k| <= 1e-12 for E = 1); the method "
+                      "then depends on the units. problem: they are "
+                      "dimensionless: alpha_0 = Initial alpha times the mean "
+                      "normal stiffness of the contact nodes (t_n^T K t_n), "
+                      "and the iteration stops when max |du_{k+1} - du_k| <= "
+                      "Tolerance times the increment's length scale (largest "
+                      "gap or displacement); the iterations then do not "
+                      "depend on the units.");
+    prm.declare_entry("Initial alpha",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "The dual step length alpha_0 of Algorithm 2 (> 0; see "
+                      "Scaling); beta_0 = 1 / (alpha_0 sigma_T^2).");
+    prm.declare_entry("Tolerance",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "Stop when the step |du_{k+1} - du_k| is below this "
+                      "(see Scaling).");
+    prm.declare_entry("Maximum iterations",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Primal-dual iterations allowed per increment. A solve "
+                      "that needs more fails with its residuals.");
+    prm.declare_entry("Stagnation window",
+                      "10000",
+                      Patterns::Integer(1),
+                      "Stop with a failure when the step |du_k+1 - du_k| has "
+                      "not become 1 percent smaller than its best value for "
+                      "this many iterations, or when it grows to 1e8 times "
+                      "its best value (divergence).");
+    prm.declare_entry("Primal step tolerance",
+                      "1e-6",
+                      Patterns::Double(0., 1.),
+                      "CG solves each primal step (beta K + I) du_{k+1} = b "
+                      "for du_{k+1} - du_k, warm-started at du_k, until its "
+                      "residual is this factor below the initial one (the "
+                      "force residual p + T r - K du_k, times beta). The "
+                      "paper's Matlab pcg was relative to |b| instead, which "
+                      "stops CG, and with it the outer loop, as soon as the "
+                      "step is below 1e-10 |b| (251 instead of 292 "
+                      "iterations for example I at N_Y = 10). The outer "
+                      "iterations stay the same down to 1e-3 (examples I "
+                      "and II); the default leaves a margin.");
+  }
+
+
+
+  template <int dim>
+  void
+  PrimalDualSolver<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    initial_alpha  = prm.get_double("Initial alpha");
+    paper_scaling  = prm.get("Scaling") == "paper";
+    tolerance      = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
+    step_tolerance = prm.get_double("Primal step tolerance");
+    stagnation_window = prm.get_integer("Stagnation window");
+    if (!(initial_alpha > 0))
+      Input::fail("Contact solver/Accelerated primal-dual/Initial alpha",
+                  Input::to_text(initial_alpha),
+                  "a positive number is expected");
+    if (!(tolerance > 0))
+      Input::fail("Contact solver/Accelerated primal-dual/Tolerance",
+                  Input::to_text(tolerance),
+                  "a positive number is expected (a step of exactly 0 is "
+                  "never reached in floating point), e.g. 1e-12");
+  }
+
+
+
+  template <int dim>
+  std::string
+  PrimalDualSolver<dim>::describe() const
+  {
+    if (paper_scaling)
+      return "accelerated primal-dual (Kanno, Algorithm 2), as published: "
+             "alpha_0 = " +
+             Input::to_text(initial_alpha) + ", stop at |du_k+1 - du_k| <= " +
+             Input::to_text(tolerance);
+    return "accelerated primal-dual (Kanno, Algorithm 2), scaled: alpha_0 = " +
+           Input::to_text(initial_alpha) +
+           " k (k: normal stiffness of the contact nodes), stop at "
+           "max |du_k+1 - du_k| <= " +
+           Input::to_text(tolerance) + " L";
+  }
+
+
+
+  template <int dim>
+  SolveStatistics
+  PrimalDualSolver<dim>::solve(const IncrementalProblem<dim> &problem,
+                               ShiftedStiffnessSolver        &linear_solver,
+                               Vector                        &du,
+                               std::vector<Tensor<1, dim>>   &r,
+                               const bool record_history) const
+  {
+    const Timer                 timer;
+    const ContactMap<dim>      &contact = problem.contact;
+    const FrictionCone<dim>    &cone    = contact.friction_cone();
+    const double                mu      = cone.mu;
+    const unsigned int          c_local = contact.n_local();
+    const std::vector<double>  &g       = problem.gaps;
+    const unsigned int amg_setups_before = linear_solver.n_amg_setups;
+
+    Vector du_hat(du), step(du), K_du(du), T_r(du), rhs(du), scratch(du);
+    problem.stiffness.vmult(K_du, du);
+
+    // The step lengths and the stopping test, in the units of the problem
+    // or (Scaling = problem) from its own scales.
+    double alpha     = initial_alpha;
+    double step_goal = tolerance;
+    if (!paper_scaling)
+      {
+        double stiffness = 0;
+        for (const double c_j : contact.normal_stiffness(problem.stiffness))
+          stiffness += c_j;
+        stiffness = Utilities::MPI::sum(stiffness, du.get_mpi_communicator()) /
+                    std::max<double>(1, contact.n_candidates());
+        alpha *= stiffness;
+        step_goal *= problem.length_scale;
+      }
+    double beta = 1. / (alpha * std::pow(problem.largest_singular_value_T, 2));
+
+    SolveStatistics result;
+    double          best_step     = std::numeric_limits<double>::max();
+    unsigned int    last_progress = 0;
+    for (unsigned int k = 0; k < max_iterations; ++k)
+      {
+        // Dual step (lines 4-7): modified gap, then projection onto F.
+        for (unsigned int j = 0; j < c_local; ++j)
+          {
+            const Tensor<1, dim> u_j     = problem.relative_displacement(j, du);
+            const Tensor<1, dim> u_hat_j = problem.relative_displacement(j, du_hat);
+            // The modified gap; without friction it is the gap itself.
+            const double g_tilde =
+              mu > 0 ? g[j] + mu * FrictionCone<dim>::tangential_norm(u_j) : g[j];
+            Tensor<1, dim> s = r[j] - alpha * u_hat_j;
+            s[0]             = r[j][0] + alpha * (g_tilde - u_hat_j[0]);
+            r[j]             = cone.project(s);
+          }
+        contact.apply(r, T_r);
+
+        // Primal step (lines 8-9) for the increment du_{k+1} - du_k:
+        // (beta K + I) step = beta (p + T r - K du), i.e.
+        // (K + I / beta) step = p + T r - K du.
+        rhs = problem.load;
+        rhs += T_r;
+        rhs -= K_du;
+        step = 0;
+        const unsigned int cg_iterations = linear_solver.solve(
+          1. / beta, step, rhs, step_tolerance * rhs.l2_norm());
+        result.linear_iterations += cg_iterations;
+
+        // Acceleration (lines 10-12).
+        const double theta = 1. / std::sqrt(1. + problem.smallest_eigenvalue_K * beta);
+        alpha /= theta;
+        beta *= theta;
+        du += step;
+        du_hat = du;
+        du_hat.add(theta, step);
+
+        problem.stiffness.vmult(K_du, du);
+        result.iterations = k + 1;
+        result.last_step  = paper_scaling ? step.l2_norm() : step.linfty_norm();
+        result.residuals =
+          compute_residuals(problem, du, K_du, T_r, r, scratch);
+
+        const HistoryRow row{k + 1,
+                             timer.wall_time(),
+                             result.residuals,
+                             result.last_step,
+                             cg_iterations};
+        if (record_history)
+          result.history.push_back(row);
+        this->report(k + 1, row);
+
+        if (!std::isfinite(result.last_step) || !result.residuals.finite())
+          {
+            result.failure = "NaN or infinity at iteration " +
+                             std::to_string(k + 1) +
+                             " (the iteration diverged); try smaller "
+                             "increments or Method = semismooth Newton";
+            break;
+          }
+        if (result.last_step < 0.99 * best_step)
+          {
+            best_step      = result.last_step;
+            last_progress = k;
+          }
+        if (result.last_step > 1e8 * best_step)
+          {
+            result.failure = "divergence at iteration " + std::to_string(k + 1) +
+                             ": the step grew to " +
+                             Input::to_text(result.last_step) + " from " +
+                             Input::to_text(best_step) +
+                             "; try smaller increments or Method = semismooth "
+                             "Newton";
+            break;
+          }
+        if (k - last_progress > stagnation_window)
+          {
+            result.failure = "no progress from iteration " +
+                             std::to_string(last_progress + 1) + " to " +
+                             std::to_string(k + 1) + " (step " +
+                             Input::to_text(result.last_step) + ", best " +
+                             Input::to_text(best_step) +
+                             "); try Method = semismooth Newton or smaller "
+                             "increments";
+            break;
+          }
+        if (result.last_step <= step_goal)
+          {
+            result.converged = true;
+            break;
+          }
+      }
+    if (!result.converged && result.failure.empty())
+      result.failure = "no convergence in " + std::to_string(max_iterations) +
+                       " iterations (last |du_k+1 - du_k| = " +
+                       Input::to_text(result.last_step) + ", tolerance " +
+                       Input::to_text(step_goal) +
+                       "); raise <Contact solver/Accelerated primal-dual/"
+                       "Maximum iterations>";
+    result.amg_setups = linear_solver.n_amg_setups - amg_setups_before;
+    result.seconds    = timer.wall_time();
+    return result;
+  }
+
+  FRICTIONAL_CONTACT_REGISTER_PLUGIN(
+    ContactSolver,
+    PrimalDualSolver,
+    "accelerated primal-dual",
+    "Kanno's Algorithm 2 as published: thousands of iterations, each a "
+    "projection onto the friction cones and one CG solve with beta K + I.")
+} // namespace FrictionalContact

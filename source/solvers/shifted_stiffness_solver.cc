@@ -1,0 +1,272 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/solvers/shifted_stiffness_solver.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// The operator x -> (K + sigma I) x.
+    class ShiftedOperator
+    {
+    public:
+      ShiftedOperator(const TrilinosWrappers::SparseMatrix &K, const double sigma)
+        : K(K)
+        , sigma(sigma)
+      {}
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        K.vmult(dst, src);
+        if (sigma != 0)
+          dst.add(sigma, src);
+      }
+
+    private:
+      const TrilinosWrappers::SparseMatrix &K;
+      const double                          sigma;
+    };
+
+    /// Multiplication by a stored inverse diagonal.
+    class DiagonalPreconditioner
+    {
+    public:
+      explicit DiagonalPreconditioner(const TrilinosWrappers::MPI::Vector &d)
+        : inverse_diagonal(d)
+      {}
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        dst = src;
+        dst.scale(inverse_diagonal);
+      }
+
+    private:
+      const TrilinosWrappers::MPI::Vector &inverse_diagonal;
+    };
+  } // namespace
+
+
+
+  void
+  ShiftedStiffnessSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Relative tolerance",
+                      "1e-10",
+                      Patterns::Double(0., 1.),
+                      "CG reduces the residual of an elastic solve (a scene "
+                      "without contact, and the solves inside the "
+                      "eigenvalue computation) by this factor. The primal "
+                      "steps of the contact solver have their own tolerance, "
+                      "<Contact solver/Primal step tolerance>.");
+    prm.declare_entry("Maximum iterations",
+                      "10000",
+                      Patterns::Integer(1),
+                      "CG iterations allowed per solve (>= 1).");
+    prm.declare_entry("Preconditioner",
+                      "auto",
+                      Patterns::Selection("auto|amg|jacobi"),
+                      "auto: Jacobi while max diag(K) <= Jacobi threshold * "
+                      "(1/beta), else AMG. amg: always Trilinos ML. jacobi: "
+                      "always the diagonal.");
+    prm.declare_entry("Jacobi threshold",
+                      "2",
+                      Patterns::Double(0.),
+                      "See Preconditioner = auto: how strongly the identity "
+                      "term of beta K + I must dominate for Jacobi (>= 0).");
+    prm.declare_entry("AMG rebuild factor",
+                      "2",
+                      Patterns::Double(1.),
+                      "The AMG built for K + sigma_ref I is reused while the "
+                      "shift sigma = 1/beta stays within this factor of "
+                      "sigma_ref (>= 1).");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1),
+                      "Chebyshev smoother sweeps of the AMG (>= 1).");
+    prm.declare_entry("AMG near null space",
+                      "rigid body modes",
+                      Patterns::Selection("rigid body modes|translations"),
+                      "The modes ML's aggregation preserves: all rigid-body "
+                      "modes (translations and rotations) or translations "
+                      "only, as DoFTools::extract_constant_modes gives.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Patterns::Double(0., 1.),
+                      "ML's aggregation drop tolerance, in [0, 1].");
+    prm.leave_subsection();
+  }
+
+
+
+  ShiftedStiffnessSolver::ShiftedStiffnessSolver(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    rel_tolerance         = prm.get_double("Relative tolerance");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    preconditioner_choice = prm.get("Preconditioner");
+    jacobi_threshold      = prm.get_double("Jacobi threshold");
+    rebuild_factor        = prm.get_double("AMG rebuild factor");
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    translations_only = prm.get("AMG near null space") == "translations";
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ShiftedStiffnessSolver::initialize(
+    const TrilinosWrappers::SparseMatrix &K,
+    std::vector<std::vector<double>>      rigid_body_modes,
+    const double                          smallest_eigenvalue_estimate)
+  {
+    stiffness       = &K;
+    modes           = std::move(rigid_body_modes);
+    stiffness_floor = smallest_eigenvalue_estimate;
+    elastic_amg.sigma = -1;
+    shifted_amg.sigma = -1;
+    jacobi_sigma      = -1;
+
+    diagonal.reinit(K.locally_owned_domain_indices(), K.get_mpi_communicator());
+    for (const auto i : K.locally_owned_domain_indices())
+      diagonal[i] = K.diag_element(i);
+    diagonal.compress(VectorOperation::insert);
+    max_diagonal = diagonal.linfty_norm();
+    inverse_diagonal.reinit(diagonal);
+  }
+
+
+
+  bool
+  ShiftedStiffnessSolver::use_jacobi(const double sigma) const
+  {
+    if (preconditioner_choice == "jacobi")
+      return true;
+    if (preconditioner_choice == "amg")
+      return false;
+    return max_diagonal <= jacobi_threshold * sigma;
+  }
+
+
+
+  void
+  ShiftedStiffnessSolver::build_jacobi(const double sigma)
+  {
+    if (sigma == jacobi_sigma)
+      return;
+    double *inverse = inverse_diagonal.begin();
+    const double *d = diagonal.begin();
+    for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
+      inverse[i] = 1. / (d[i] + sigma);
+    jacobi_sigma = sigma;
+  }
+
+
+
+  const TrilinosWrappers::PreconditionAMG &
+  ShiftedStiffnessSolver::amg_for(const double sigma)
+  {
+    AMG &amg = sigma == 0 ? elastic_amg : shifted_amg;
+    if (amg.sigma >= 0 &&
+        std::abs(sigma - amg.sigma) <=
+          (rebuild_factor - 1.) * (std::min(sigma, amg.sigma) + stiffness_floor))
+      return amg.preconditioner;
+
+    Timer timer;
+    amg.preconditioner.clear(); // ML keeps a reference to its matrix
+    // Without a shift the AMG is built on K itself, without a copy.
+    if (sigma != 0)
+      {
+        amg.matrix.copy_from(*stiffness);
+        for (const auto i : stiffness->locally_owned_range_indices())
+          amg.matrix.add(i, i, sigma);
+        amg.matrix.compress(VectorOperation::add);
+      }
+    const TrilinosWrappers::SparseMatrix &matrix =
+      sigma != 0 ? amg.matrix : *stiffness;
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = false;
+    data.smoother_sweeps       = smoother_sweeps;
+    data.aggregation_threshold = aggregation_threshold;
+
+    Teuchos::ParameterList              parameters;
+    std::unique_ptr<Epetra_MultiVector> unused_constant_modes;
+    data.set_parameters(parameters, unused_constant_modes, matrix);
+
+    // Near null space: the rigid-body modes, nodal blocks of dim dofs.
+    const int          dim     = modes.size() == 3 ? 2 : 3;
+    const unsigned int n_modes = translations_only ? dim : modes.size();
+    Epetra_MultiVector null_space(matrix.trilinos_matrix().OperatorDomainMap(),
+                                  n_modes);
+    for (unsigned int m = 0; m < n_modes; ++m)
+      for (unsigned int row = 0; row < modes[m].size(); ++row)
+        null_space[m][row] = modes[m][row];
+    parameters.set("PDE equations", dim);
+    parameters.set("null space: type", "pre-computed");
+    parameters.set("null space: dimension", static_cast<int>(n_modes));
+    parameters.set("null space: vectors", null_space.Values());
+
+    amg.preconditioner.initialize(matrix, parameters);
+    amg.sigma = sigma;
+    ++n_amg_setups;
+    amg_setup_seconds += timer.wall_time();
+    return amg.preconditioner;
+  }
+
+
+
+  unsigned int
+  ShiftedStiffnessSolver::solve(const double  sigma,
+                                Vector       &x,
+                                const Vector &b,
+                                const double  tolerance)
+  {
+    SolverControl        control(max_iterations, tolerance, false, false);
+    SolverCG<Vector>     cg(control);
+    const ShiftedOperator op(*stiffness, sigma);
+    try
+      {
+        if (use_jacobi(sigma))
+          {
+            build_jacobi(sigma);
+            last_preconditioner = "Jacobi";
+            cg.solve(op, x, b, DiagonalPreconditioner(inverse_diagonal));
+          }
+        else
+          {
+            const auto &amg     = amg_for(sigma);
+            last_preconditioner = "AMG";
+            cg.solve(op, x, b, amg);
+          }
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        std::ostringstream message;
+        message << "the conjugate gradient solve of (K + " << sigma
+                << " I) x = b did not converge: residual " << e.last_residual
+                << " after " << e.last_step << " iterations, tolerance "
+                << tolerance << " (" << last_preconditioner
+                << " preconditioner). Try a larger <Linear solver/Maximum "
+                   "iterations> or <Linear solver/Relative tolerance>";
+        throw SolverError(message.str());
+      }
+    return control.last_step();
+  }
+} // namespace FrictionalContact
