@@ -78,8 +78,8 @@ namespace FrictionalContact
     const Tensor<1, dim>                &obstacle_motion) const
   {
     const ContactOperator<dim> &contact = model.get_contact();
-    auto                        problem = std::make_unique<IncrementalProblem<dim>>(
-      IncrementalProblem<dim>{model.get_body().stiffness_matrix(), load, contact});
+    auto problem = std::make_unique<IncrementalProblem<dim>>(
+      model.get_body().stiffness_matrix(), load, contact);
     problem->largest_singular_value_T = sigma_T;
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {

@@ -1,5 +1,6 @@
 // The exchange with FCLIB files (through libfclib) and FCLIB's error measure.
 #include <frictional_contact/fclib/fclib_problem.h>
+#include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/base/input.h>
 
 extern "C"
@@ -204,25 +205,20 @@ namespace FrictionalContact
       fclib_matrix        matrix;
     };
 
-    /// P_K: the projection onto FCLIB's cone {|r_t| <= mu r_n}.
+    /// P_K: the projection onto FCLIB's cone {|r_t| <= mu r_n}, which is
+    /// FrictionCone's (Algorithm 3) with the sign of the normal flipped.
+    template <int dim>
     void
-    project_onto_cone(double *r, const unsigned int spacedim, const double mu)
+    project_onto_cone(double *r, const double mu)
     {
-      double r_t = 0;
-      for (unsigned int k = 1; k < spacedim; ++k)
-        r_t += r[k] * r[k];
-      r_t = std::sqrt(r_t);
-      if (mu * r_t <= -r[0]) // in the polar cone
-        {
-          std::fill(r, r + spacedim, 0.);
-          return;
-        }
-      if (r_t <= mu * r[0]) // in the cone
-        return;
-      const double r_n = (mu * r_t + r[0]) / (mu * mu + 1.);
-      r[0]             = r_n;
-      for (unsigned int k = 1; k < spacedim; ++k)
-        r[k] *= mu * r_n / r_t;
+      Tensor<1, dim> s;
+      for (unsigned int k = 0; k < dim; ++k)
+        s[k] = r[k];
+      s[0] = -s[0];
+      const Tensor<1, dim> projection = FrictionCone<dim>(mu).project(s);
+      for (unsigned int k = 0; k < dim; ++k)
+        r[k] = projection[k];
+      r[0] = -r[0];
     }
   } // namespace
 
@@ -439,7 +435,10 @@ namespace FrictionalContact
         for (unsigned int k = 0; k < d; ++k)
           s[k] = r_c[k] - u_c[k];
         s[0] -= problem.mu[c] * std::sqrt(u_t);
-        project_onto_cone(s, d, problem.mu[c]);
+        if (d == 2)
+          project_onto_cone<2>(s, problem.mu[c]);
+        else
+          project_onto_cone<3>(s, problem.mu[c]);
         for (unsigned int k = 0; k < d; ++k)
           sum += std::pow(r_c[k] - s[k], 2);
       }

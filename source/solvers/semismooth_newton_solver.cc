@@ -135,28 +135,225 @@ namespace FrictionalContact
       const double                          mu;
     };
 
-    /// P M P with M the AMG of K.
+    /// The node conditions of an active-set step and what goes with them.
+    template <int dim>
+    struct ActiveSets
+    {
+      explicit ActiveSets(const std::vector<double> &c_t)
+        : conditions(c_t.size(), NodeCondition::none)
+        , bound(c_t.size(), 0.)
+        , slip_direction(c_t.size())
+        , robin(c_t.size(), 0.)
+        , c_t(c_t)
+        , flips(c_t.size(), 0)
+      {}
+
+      std::vector<NodeCondition>  conditions;
+      /// mu max(sigma_j, 0): the friction bound of each node.
+      std::vector<double>         bound;
+      std::vector<Tensor<1, dim>> slip_direction;
+      /// kappa_j of the Robin term across the slip (3D).
+      std::vector<double>         robin;
+      /// c_t per node, and how often its stick/slip state went back and
+      /// forth.
+      std::vector<double>       c_t;
+      std::vector<unsigned int> flips;
+    };
+
+    /**
+     * Sorts the nodes by the augmented reactions of (du, r): free where the
+     * augmented normal reaction sigma_j is not positive, stick inside the
+     * friction bound, slip on it. Returns whether a node of this rank
+     * changed its condition.
+     */
+    template <int dim>
+    bool
+    classify(const IncrementalProblem<dim>     &problem,
+             const Vector                      &du,
+             const std::vector<Tensor<1, dim>> &r,
+             const std::vector<double>         &c,
+             const double                       mu_k,
+             ActiveSets<dim>                   &sets)
+    {
+      const unsigned int n       = c.size();
+      bool               changed = false;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
+        const double sigma = -r[j][0] - c[j] * (problem.gaps[j] - u_j[0]);
+        Tensor<1, dim> zeta = r[j] - sets.c_t[j] * u_j;
+        zeta[0]             = 0;
+        const double zeta_norm = zeta.norm();
+        const NodeCondition before = sets.conditions[j];
+        const Tensor<1, dim> direction_before = sets.slip_direction[j];
+        sets.bound[j] = mu_k * std::max(sigma, 0.);
+        if (!(sigma > 0))
+          sets.conditions[j] = NodeCondition::none;
+        else if (mu_k > 0 && zeta_norm < sets.bound[j])
+          sets.conditions[j] = NodeCondition::all_fixed;
+        else
+          {
+            sets.conditions[j] = NodeCondition::normal_fixed;
+            sets.slip_direction[j] =
+              zeta_norm > 0 ? zeta / zeta_norm : Tensor<1, dim>();
+            // kappa = s c_t / (|zeta| - s), bounded where |zeta| ~ s.
+            sets.robin[j] = zeta_norm > sets.bound[j] ?
+                         std::min(sets.bound[j] * sets.c_t[j] / (zeta_norm - sets.bound[j]),
+                                  1e3 * c[j]) :
+                         0.;
+          }
+        changed = changed || sets.conditions[j] != before;
+        // Anti-cycling: stick <-> slip, or a reversed slip direction.
+        const bool flipped =
+          before != NodeCondition::none &&
+          sets.conditions[j] != NodeCondition::none &&
+          (sets.conditions[j] != before ||
+           (before == NodeCondition::normal_fixed &&
+            sets.slip_direction[j] * direction_before < 0));
+        if (mu_k > 0 && flipped && ++sets.flips[j] >= 2)
+          {
+            sets.c_t[j] *= 0.1;
+            sets.flips[j] = 0;
+          }
+      }
+      return changed;
+    }
+
+
+
+    /**
+     * The merit of the line search at the point t of the segment from the
+     * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
+     * complementarity functions of all nodes, scaled by c_j, plus the
+     * squared force balance residual (linear along the segment), scaled by
+     * the mean c. Collective.
+     */
+    template <int dim>
+    class MeritAlongStep
+    {
+    public:
+      MeritAlongStep(const IncrementalProblem<dim>     &problem,
+                     const std::vector<double>         &c,
+                     const std::vector<double>         &c_t,
+                     const double                       mu_k,
+                     const double                       mean_c,
+                     const Vector                      &du_0,
+                     const Vector                      &du_1,
+                     const std::vector<Tensor<1, dim>> &r_0,
+                     const std::vector<Tensor<1, dim>> &r_1,
+                     const Vector                      &balance_0,
+                     const Vector                      &balance_1,
+                     Vector                            &scratch)
+        : problem(problem)
+        , c(c)
+        , c_t(c_t)
+        , mu_k(mu_k)
+        , mean_c(mean_c)
+        , du_0(du_0)
+        , du_1(du_1)
+        , r_0(r_0)
+        , r_1(r_1)
+      {
+        balance_a = balance_0.norm_sqr();
+        balance_b = balance_0 * balance_1 - balance_a;
+        scratch   = balance_1;
+        scratch -= balance_0;
+        balance_c = scratch.norm_sqr();
+      }
+
+      double
+      operator()(const double t) const
+      {
+        double sum = 0;
+        for (unsigned int j = 0; j < c.size(); ++j)
+          {
+            const Tensor<1, dim> u_j =
+              (1 - t) * problem.relative_displacement(j, du_0) +
+              t * problem.relative_displacement(j, du_1);
+            const Tensor<1, dim> r_j   = (1 - t) * r_0[j] + t * r_1[j];
+            const double         gap   = problem.gaps[j] - u_j[0];
+            const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
+            const double bound_j = mu_k * std::max(0., -(r_j[0] + c[j] * gap));
+            Tensor<1, dim> z     = r_j - c_t[j] * u_j;
+            z[0]                 = 0;
+            if (z.norm() > bound_j)
+              z *= bound_j / z.norm();
+            Tensor<1, dim> phi_t = r_j - z;
+            phi_t[0]             = 0;
+            sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
+          }
+        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
+               (balance_a + 2 * t * balance_b + t * t * balance_c) / mean_c;
+      }
+
+    private:
+      const IncrementalProblem<dim>     &problem;
+      const std::vector<double>         &c;
+      const std::vector<double>         &c_t;
+      const double                       mu_k;
+      const double                       mean_c;
+      const Vector                      &du_0;
+      const Vector                      &du_1;
+      const std::vector<Tensor<1, dim>> &r_0;
+      const std::vector<Tensor<1, dim>> &r_1;
+      double                             balance_a, balance_b, balance_c;
+    };
+
+
+
+    /// P M P with M the preconditioner of K (the AMG, unless <Linear
+    /// solver/Preconditioner> asks for Jacobi).
     template <int dim>
     class ProjectedPreconditioner
     {
     public:
-      ProjectedPreconditioner(const TrilinosWrappers::PreconditionAMG &amg,
-                              const NodeProjection<dim>               &P)
-        : amg(amg)
+      ProjectedPreconditioner(const ShiftedStiffnessSolver &stiffness_solver,
+                              const NodeProjection<dim>    &P)
+        : stiffness_solver(stiffness_solver)
         , P(P)
       {}
 
       void
       vmult(Vector &dst, const Vector &src) const
       {
-        amg.vmult(dst, src);
+        stiffness_solver.precondition_stiffness(dst, src);
         P.apply(dst);
       }
 
     private:
-      const TrilinosWrappers::PreconditionAMG &amg;
-      const NodeProjection<dim>               &P;
+      const ShiftedStiffnessSolver &stiffness_solver;
+      const NodeProjection<dim>    &P;
     };
+    /**
+     * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
+     * a slipping node makes A non-symmetric, else CG. Returns the Krylov
+     * iterations; throws SolverControl::NoConvergence.
+     */
+    template <int dim>
+    unsigned int
+    solve_newton_system(const ContactStiffness<dim>        &A,
+                        const ProjectedPreconditioner<dim> &preconditioner,
+                        const bool                          non_symmetric,
+                        const unsigned int                  max_iterations,
+                        const double                        goal,
+                        const Vector                       &rhs,
+                        Vector                             &w)
+    {
+      SolverControl control(max_iterations, goal, false, false);
+      w = 0;
+      if (non_symmetric)
+        {
+          SolverGMRES<Vector> gmres(
+            control, typename SolverGMRES<Vector>::AdditionalData(50, true));
+          gmres.solve(A, w, rhs, preconditioner);
+        }
+      else
+        {
+          SolverCG<Vector> cg(control);
+          cg.solve(A, w, rhs, preconditioner);
+        }
+      return control.last_step();
+    }
   } // namespace
 
 
@@ -239,19 +436,18 @@ namespace FrictionalContact
     const unsigned int n        = contact.n_local();
     const MPI_Comm     comm     = du.get_mpi_communicator();
     const unsigned int setups   = linear_solver.n_amg_setups;
-    const auto        &amg      = linear_solver.stiffness_preconditioner();
+    linear_solver.prepare_stiffness_preconditioner();
 
     const std::vector<double> c = contact.normal_stiffness(K);
 
-    std::vector<NodeCondition>  conditions(n, NodeCondition::none);
-    std::vector<double>         bound(n, 0.);
-    std::vector<Tensor<1, dim>> slip_direction(n);
-    std::vector<double>         robin(n, 0.);
-    // c_t per node, and how often its stick/slip state went back and forth.
-    std::vector<double>       c_t(n);
-    std::vector<unsigned int> flips(n, 0);
+    std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)
-      c_t[j] = tangential_factor * c[j];
+      initial_c_t[j] = tangential_factor * c[j];
+    ActiveSets<dim>                   sets(initial_c_t);
+    const std::vector<NodeCondition> &conditions     = sets.conditions;
+    const std::vector<Tensor<1, dim>> &slip_direction = sets.slip_direction;
+    const std::vector<double>         &robin          = sets.robin;
+    const std::vector<double>         &c_t            = sets.c_t;
 
     // From a cold start, the frictionless problem first: the normal sets
     // settle in a few steps, and friction then starts from real pressures.
@@ -300,47 +496,8 @@ namespace FrictionalContact
 
         // Sort the nodes by the augmented reactions of the current iterate.
         const double mu_k    = friction ? mu : 0.;
-        bool         changed = false;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-            const double sigma = -r[j][0] - c[j] * (problem.gaps[j] - u_j[0]);
-            Tensor<1, dim> zeta = r[j] - c_t[j] * u_j;
-            zeta[0]             = 0;
-            const double zeta_norm = zeta.norm();
-            const NodeCondition before = conditions[j];
-            const Tensor<1, dim> direction_before = slip_direction[j];
-            bound[j] = mu_k * std::max(sigma, 0.);
-            if (!(sigma > 0))
-              conditions[j] = NodeCondition::none;
-            else if (mu_k > 0 && zeta_norm < bound[j])
-              conditions[j] = NodeCondition::all_fixed;
-            else
-              {
-                conditions[j] = NodeCondition::normal_fixed;
-                slip_direction[j] =
-                  zeta_norm > 0 ? zeta / zeta_norm : Tensor<1, dim>();
-                // kappa = s c_t / (|zeta| - s), bounded where |zeta| ~ s.
-                robin[j] = zeta_norm > bound[j] ?
-                             std::min(bound[j] * c_t[j] / (zeta_norm - bound[j]),
-                                      1e3 * c[j]) :
-                             0.;
-              }
-            changed = changed || conditions[j] != before;
-            // Anti-cycling: stick <-> slip, or a reversed slip direction.
-            const bool flipped =
-              before != NodeCondition::none &&
-              conditions[j] != NodeCondition::none &&
-              (conditions[j] != before ||
-               (before == NodeCondition::normal_fixed &&
-                slip_direction[j] * direction_before < 0));
-            if (mu_k > 0 && flipped && ++flips[j] >= 2)
-              {
-                c_t[j] *= 0.1;
-                flips[j] = 0;
-              }
-          }
-        changed = Utilities::MPI::logical_or(changed, comm);
+        const bool   changed = Utilities::MPI::logical_or(
+          classify(problem, du, r, c, mu_k, sets), comm);
         if (!friction && mu > 0 && !changed && k > 0)
           {
             friction      = true; // the normal sets have settled
@@ -404,29 +561,24 @@ namespace FrictionalContact
         const double initial = rhs.l2_norm();
         const double goal =
           std::max(reduction * initial, 0.1 * tolerance * load_norm);
-        SolverControl                      control(10000, goal, false, false);
-        const ProjectedPreconditioner<dim> preconditioner(amg, P);
+        unsigned int linear_iterations = 0;
         try
           {
-            if (any_slip)
-              {
-                SolverGMRES<Vector> gmres(
-                  control, typename SolverGMRES<Vector>::AdditionalData(50, true));
-                gmres.solve(A, w, rhs, preconditioner);
-              }
-            else
-              {
-                SolverCG<Vector> cg(control);
-                cg.solve(A, w, rhs, preconditioner);
-              }
+            linear_iterations = solve_newton_system(
+              A, ProjectedPreconditioner<dim>(linear_solver, P), any_slip,
+              linear_solver.maximum_iterations(), goal, rhs, w);
           }
-        catch (const SolverControl::NoConvergence &)
+        catch (const SolverControl::NoConvergence &e)
           {
-            result.failure = "the linear solve of Newton iteration " +
-                             std::to_string(k + 1) + " did not converge";
+            result.failure =
+              "the linear solve of Newton iteration " + std::to_string(k + 1) +
+              " did not converge (residual " + Input::scientific(e.last_residual) +
+              " after " + std::to_string(e.last_step) + " iterations, goal " +
+              Input::scientific(goal) +
+              "); raise <Linear solver/Maximum iterations>";
             break;
           }
-        result.linear_iterations += control.last_step();
+        result.linear_iterations += linear_iterations;
         du += w;
 
         // Reactions: the residual K du - p at the active nodes. (They may
@@ -451,33 +603,9 @@ namespace FrictionalContact
         residual = K_du;
         residual -= problem.load;
         residual -= T_r;
-        const double balance_a = previous_residual.norm_sqr();
-        const double balance_b = previous_residual * residual - balance_a;
-        scratch                = residual;
-        scratch -= previous_residual;
-        const double balance_c = scratch.norm_sqr();
-        const auto merit = [&](const double t) {
-          double sum = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const Tensor<1, dim> u_j =
-                (1 - t) * problem.relative_displacement(j, previous_du) +
-                t * problem.relative_displacement(j, du);
-              const Tensor<1, dim> r_j   = (1 - t) * previous_r[j] + t * r[j];
-              const double         gap   = problem.gaps[j] - u_j[0];
-              const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
-              const double bound_j = mu_k * std::max(0., -(r_j[0] + c[j] * gap));
-              Tensor<1, dim> z = r_j - c_t[j] * u_j;
-              z[0]             = 0;
-              if (z.norm() > bound_j)
-                z *= bound_j / z.norm();
-              Tensor<1, dim> phi_t = r_j - z;
-              phi_t[0]             = 0;
-              sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
-            }
-          return Utilities::MPI::sum(sum, comm) +
-                 (balance_a + 2 * t * balance_b + t * t * balance_c) / mean_c;
-        };
+        const MeritAlongStep<dim> merit(problem, c, c_t, mu_k, mean_c,
+                                        previous_du, du, previous_r, r,
+                                        previous_residual, residual, scratch);
         const double merit_before = merit(0.);
         double       t            = 1;
         while (t > 1. / 64 && merit(t) > (1 - 1e-4 * t) * merit_before)
@@ -525,7 +653,7 @@ namespace FrictionalContact
                              timer.wall_time(),
                              result.residuals,
                              result.last_step,
-                             control.last_step()};
+                             linear_iterations};
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);
@@ -550,7 +678,9 @@ namespace FrictionalContact
     ContactSolver,
     SemismoothNewtonSolver,
     "semismooth Newton",
-    "A primal-dual active set (semismooth Newton) method with the friction "
-    "bound lagged by one iteration: a few linear elastic solves with "
-    "projected constraints, preconditioned by the AMG of K.")
+    "A primal-dual active set (semismooth Newton) method: per iteration "
+    "one linear elastic solve with the contact conditions imposed by "
+    "projection, the friction force coupled to the normal reaction at "
+    "slipping nodes, CG or GMRES preconditioned by the AMG of K, and a line "
+    "search.")
 } // namespace FrictionalContact

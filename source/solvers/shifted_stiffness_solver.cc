@@ -232,6 +232,35 @@ namespace FrictionalContact
 
 
 
+  void
+  ShiftedStiffnessSolver::prepare_stiffness_preconditioner()
+  {
+    if (use_jacobi(0.))
+      {
+        build_jacobi(0.);
+        last_preconditioner = "Jacobi";
+      }
+    else
+      {
+        amg_for(0.);
+        last_preconditioner = "AMG";
+      }
+  }
+
+
+
+  void
+  ShiftedStiffnessSolver::precondition_stiffness(Vector       &dst,
+                                                 const Vector &src) const
+  {
+    if (use_jacobi(0.))
+      DiagonalPreconditioner(inverse_diagonal).vmult(dst, src);
+    else
+      elastic_amg.preconditioner.vmult(dst, src);
+  }
+
+
+
   unsigned int
   ShiftedStiffnessSolver::solve(const double  sigma,
                                 Vector       &x,

@@ -19,6 +19,15 @@ namespace FrictionalContact
   template <int dim>
   struct IncrementalProblem
   {
+    /// The problem with K, p and T; the other members are set afterwards.
+    IncrementalProblem(const TrilinosWrappers::SparseMatrix &stiffness,
+                       const TrilinosWrappers::MPI::Vector  &load,
+                       const ContactMap<dim>                &contact)
+      : stiffness(stiffness)
+      , load(load)
+      , contact(contact)
+    {}
+
     const TrilinosWrappers::SparseMatrix &stiffness;
     /// p = p^{l+1} - K u^l (zero at fixed dofs).
     const TrilinosWrappers::MPI::Vector &load;

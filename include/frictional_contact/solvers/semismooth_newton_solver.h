@@ -13,13 +13,18 @@ namespace FrictionalContact
    * (sigma <= 0), stick (|zeta| < mu sigma) and slip, and solves one linear
    * elastic problem: free nodes unloaded, the normal displacement of active
    * nodes fixed to the gap, the tangential displacement of sticking nodes
-   * fixed, and the friction force mu sigma zeta/|zeta| applied at slipping
-   * nodes (the friction bound lagged by one iteration, which keeps the
-   * system symmetric positive definite). The constraints are imposed by
-   * projection inside CG, preconditioned with the AMG of K, so the
-   * preconditioner is built once. c_j is the normal stiffness of node j,
-   * t_n,j^T K t_n,j: the method does not depend on the units. The reactions
-   * are the residual K du - p at the active nodes.
+   * fixed, and at slipping nodes the friction force coupled to the normal
+   * reaction, r_t = -mu r_n zeta/|zeta|, with (in 3D) a Robin term across
+   * the slip direction: the linearisation of r_t = mu |r_n| zeta/|zeta|.
+   * The constraints are imposed by projection inside CG (GMRES(50) when a
+   * node slips, since the coupling makes the system non-symmetric),
+   * preconditioned with the AMG of K (or Jacobi, as <Linear solver/
+   * Preconditioner> says), built once. A line search on the
+   * complementarity functions and the force balance keeps the sets from
+   * cycling. c_j is the normal stiffness of node j, t_n,j^T K t_n,j: the
+   * method does not depend on the units. The reactions are the residual
+   * K du - p at the active nodes. It needs a ContactMap whose T_j are
+   * orthonormal on disjoint entries (one node each).
    */
   template <int dim>
   class SemismoothNewtonSolver : public ContactSolver<dim>

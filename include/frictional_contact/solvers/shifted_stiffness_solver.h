@@ -62,11 +62,22 @@ namespace FrictionalContact
           const Vector &b,
           const double tolerance);
 
-    /// The AMG of K itself (built on first use, then kept).
-    const TrilinosWrappers::PreconditionAMG &
-    stiffness_preconditioner()
+    /// Makes the preconditioner of K itself that <Linear solver/
+    /// Preconditioner> chooses (the AMG is built on first use, then kept),
+    /// for precondition_stiffness().
+    void
+    prepare_stiffness_preconditioner();
+
+    /// dst = M^-1 src with the preconditioner of K made by
+    /// prepare_stiffness_preconditioner().
+    void
+    precondition_stiffness(Vector &dst, const Vector &src) const;
+
+    /// Krylov iterations allowed per linear solve.
+    unsigned int
+    maximum_iterations() const
     {
-      return amg_for(0.);
+      return max_iterations;
     }
 
     /// The relative tolerance of elastic solves.
