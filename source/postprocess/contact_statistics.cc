@@ -10,16 +10,6 @@ namespace FrictionalContact
     class ContactStatistics : public Interface<dim>
     {
     public:
-      static void
-      declare_parameters(ParameterHandler &)
-      {}
-
-      void
-      parse_parameters(ParameterHandler &,
-                       const std::string &,
-                       const MPI_Comm) override
-      {}
-
       Columns
       execute(const IncrementResult<dim> &result) override
       {

@@ -11,16 +11,6 @@ namespace FrictionalContact
     class SolverStatistics : public Interface<dim>
     {
     public:
-      static void
-      declare_parameters(ParameterHandler &)
-      {}
-
-      void
-      parse_parameters(ParameterHandler &,
-                       const std::string &,
-                       const MPI_Comm) override
-      {}
-
       Columns
       execute(const IncrementResult<dim> &result) override
       {

@@ -63,11 +63,18 @@ namespace FrictionalContact
     public:
       virtual ~Interface() = default;
 
-      /// Reads its entries (inside "Output"); @p directory is where it writes.
+      /// Declares its entries (inside "Output"); none by default.
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
+      /// Reads its entries (inside "Output"); @p directory is where it
+      /// writes. Nothing by default.
       virtual void
-      parse_parameters(ParameterHandler  &prm,
-                       const std::string &directory,
-                       const MPI_Comm     comm) = 0;
+      parse_parameters(ParameterHandler & /*prm*/,
+                       const std::string & /*directory*/,
+                       const MPI_Comm /*comm*/)
+      {}
 
       /// What it writes ("vtu every increment"), or "" if nothing.
       virtual std::string
