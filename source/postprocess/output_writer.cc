@@ -163,15 +163,29 @@ namespace FrictionalContact
   Postprocess::Columns
   OutputWriter<dim>::execute(const Postprocess::IncrementResult<dim> &result)
   {
+    const bool vtu_due =
+      write_vtu && (result.increment % write_every == 0 || result.last());
+    if (!vtu_due && !write_csv)
+      return {};
     const Model<dim> &model = result.model;
-    write(result.increment,
-          result.time,
-          result.last(),
-          model.get_body(),
-          model.get_contact(),
-          model.get_material(),
-          result.state.u,
-          result.outcome.results);
+    run_on_root(model.get_mpi_communicator(), [&]() {
+      std::filesystem::create_directories(directory + "/solution");
+    });
+    if (vtu_due)
+      write_vtu_files(result.increment,
+                      result.time,
+                      result.last(),
+                      model.get_body(),
+                      model.get_contact(),
+                      model.get_material(),
+                      result.state.u,
+                      result.outcome.results);
+    if (write_csv)
+      write_csv_files(result.increment,
+                      model.get_body(),
+                      model.get_contact(),
+                      result.state.u,
+                      result.outcome.results);
     return {};
   }
 
@@ -212,33 +226,6 @@ namespace FrictionalContact
     if (write_csv)
       text += std::string(text.empty() ? "" : ", ") + "csv tables";
     return text;
-  }
-
-
-
-  template <int dim>
-  void
-  OutputWriter<dim>::write(const unsigned int                increment,
-                           const double                      time,
-                           const bool                        last_increment,
-                           const ElasticBody<dim>           &body,
-                           const ContactOperator<dim>       &contact,
-                           const LinearElasticMaterial<dim> &material,
-                           const Vector                     &u,
-                           const ContactResults<dim>        &results)
-  {
-    const bool vtu_due =
-      write_vtu && (increment % write_every == 0 || last_increment);
-    if (!vtu_due && !write_csv)
-      return;
-    const MPI_Comm comm = body.get_mpi_communicator();
-    run_on_root(comm, [&]() {
-      std::filesystem::create_directories(directory + "/solution");
-    });
-    if (vtu_due)
-      write_vtu_files(increment, time, last_increment, body, contact, material, u, results);
-    if (write_csv)
-      write_csv_files(increment, body, contact, u, results);
   }
 
 

@@ -52,20 +52,6 @@ namespace FrictionalContact
     load_state(const std::string &state) override;
 
   private:
-    /**
-     * Writes increment @p increment (counted from 1) at time @p time, if it
-     * is due (every n-th, and the last). @p u is the total displacement.
-     */
-    void
-    write(const unsigned int                increment,
-          const double                      time,
-          const bool                        last_increment,
-          const ElasticBody<dim>           &body,
-          const ContactOperator<dim>       &contact,
-          const LinearElasticMaterial<dim> &material,
-          const Vector                     &u,
-          const ContactResults<dim>        &results);
-
     void
     write_vtu_files(const unsigned int                increment,
                     const double                      time,
