@@ -4,17 +4,22 @@
 For each FCLIB global problem (files given, the scene's exported increment
 with --scene, or by default tests/fclib/data), runs
 
-  - contact --fclib (Kanno's Algorithm 2, the settings of --parameters),
+  - contact --fclib with each of our methods of --methods: the semismooth
+    Newton method (the default, stopped at FCLIB error <= --tolerance) and
+    Kanno's Algorithm 2 (its own stopping rule), with the settings of
+    --parameters,
   - build/siconos_gfc3d with each Siconos solver of --siconos-solvers, at
     --tolerance (optional: skipped if Siconos was not found at build time),
 
 and writes one CSV row per file and solver: time, iterations, the solver's
 own error, the common error measure computed by the same code for every
 solver (contact --evaluate, doc/fclib.md), success (common error <=
---tolerance), and the relative difference of v to our solution.
+--tolerance), and the relative difference of v to the solution of our
+first method.
 
 usage: python3 bench/fclib_side_by_side.py [problem.hdf5 ...]
            [--scene scene.prm [--increment 1]] [--parameters file.prm]
+           [--methods "semismooth Newton,accelerated primal-dual"]
            [--siconos-solvers NSN_AC,ADMM,NSGS_WR,IPM] [--tolerance 1e-8]
            [--max-iterations 10000] [--timeout 300]
            [--csv doc/benchmarks/fclib.csv] [--build build]
@@ -80,6 +85,18 @@ def sizes(output):
     return (int(match.group(1)), int(match.group(2))) if match else ("", "")
 
 
+def write_settings(path, method, arguments):
+    """A parameter file for one of our methods (with --parameters included)."""
+    with open(path, "w") as out:
+        if arguments.parameters:
+            out.write(f"include {os.path.abspath(arguments.parameters)}\n")
+        out.write(f"subsection Contact solver\n  set Method = {method}\n")
+        if method == "semismooth Newton":
+            out.write(f"  subsection Semismooth Newton\n"
+                      f"    set Tolerance = {arguments.tolerance}\n  end\n")
+        out.write("end\n")
+
+
 def export_scene(contact, scene, increment, folder, timeout):
     code, output = run([contact, "--fclib-export", str(increment),
                         os.path.abspath(scene)], timeout, cwd=folder)
@@ -96,6 +113,8 @@ def main():
     parser.add_argument("--scene")
     parser.add_argument("--increment", type=int, default=1)
     parser.add_argument("--parameters")
+    parser.add_argument("--methods",
+                        default="semismooth Newton,accelerated primal-dual")
     parser.add_argument("--siconos-solvers", default="NSN_AC,ADMM,NSGS_WR,IPM")
     parser.add_argument("--tolerance", type=float, default=1e-8)
     parser.add_argument("--max-iterations", type=int, default=10000)
@@ -125,21 +144,28 @@ def main():
     rows = []
     for problem in problems:
         name = os.path.basename(problem)
-        ours = os.path.join(work, name + ".ours.hdf5")
-        command = [contact, "--fclib", problem, "--solution", ours]
-        if arguments.parameters:
-            command.append(arguments.parameters)
-        code, output = run(command, arguments.timeout)
-        n, contacts = sizes(output)
-        row = {"file": name, "n": n, "contacts": contacts,
-               "solver": "ours: accelerated primal-dual"}
-        result = result_line(output)
-        if result:
-            row.update(result)
-            row["common_error"] = result["own_error"]
-        row["note"] = ("timeout" if code is None else
-                       error_line(output) if code != 0 else "")
-        rows.append(row)
+        ours = None
+        for method in arguments.methods.split(","):
+            solution = os.path.join(work, f"{name}.{method.replace(' ', '_')}.hdf5")
+            settings = os.path.join(work, method.replace(" ", "_") + ".prm")
+            write_settings(settings, method, arguments)
+            code, output = run([contact, "--fclib", problem, "--solution",
+                                solution, settings], arguments.timeout)
+            n, contacts = sizes(output)
+            row = {"file": name, "n": n, "contacts": contacts,
+                   "solver": f"ours: {method}"}
+            result = result_line(output)
+            if result:
+                row.update(result)
+                row["common_error"] = result["own_error"]
+            row["note"] = ("timeout" if code is None else
+                           error_line(output) if code != 0 else "")
+            if ours is None:
+                ours = solution
+            elif os.path.exists(solution):
+                row["v_difference_to_ours"] = evaluate(
+                    contact, problem, solution, ours, arguments.timeout)[1]
+            rows.append(row)
 
         for solver in arguments.siconos_solvers.split(",") if siconos else []:
             solution = os.path.join(work, f"{name}.{solver}.hdf5")

@@ -2,9 +2,11 @@
 """The FCLIB round trip: a scene exports an increment as an FCLIB global
 problem with its solution; the stored solution must pass FCLIB's error
 measure, and the program, solving the file again from scratch with the
-accelerated primal-dual method, must find the same solution.
+semismooth Newton method (the default) and with the accelerated primal-dual
+method (the parameter file of --primal-dual), must find the same solution.
 
-usage: fclib_round_trip.py <contact> <scene.prm> [--ranks N] [--limit 1e-8]
+usage: fclib_round_trip.py <contact> <scene.prm> --primal-dual <file.prm>
+                           [--ranks N] [--limit 1e-8]
 Runs in the current folder; the scene writes output-fclib/fclib-00001.hdf5.
 """
 import argparse
@@ -16,6 +18,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("contact")
     parser.add_argument("scene")
+    parser.add_argument("--primal-dual", required=True)
     parser.add_argument("--ranks", type=int, default=0)
     parser.add_argument("--limit", type=float, default=1e-8)
     arguments = parser.parse_args()
@@ -24,20 +27,23 @@ def main():
 
     run([contact, arguments.scene], ranks)
     stored = run([contact, "--fclib", exported, "--evaluate", exported], 0)
-    imported = run([contact, "--fclib", exported, "--solution", "imported.hdf5"],
-                   ranks)
-    compared = run([contact, "--fclib", exported, "--evaluate", "imported.hdf5",
-                    "--reference", exported], 0)
-
-    v, r = numbers(DIFFERENCE, compared)
-    verdict([
-        ("FCLIB error of the exported solution",
-         numbers(r"FCLIB error: (\S+)", stored)[0], limit),
-        ("FCLIB error of the imported problem's solution",
-         numbers(r"FCLIB error: (\S+)", imported)[0], limit),
-        ("relative difference in v", v, limit),
-        ("relative difference in r", r, limit),
-    ])
+    checks = [("FCLIB error of the exported solution",
+               numbers(r"FCLIB error: (\S+)", stored)[0], limit)]
+    for method, settings in [("Newton", []),
+                             ("primal-dual", [arguments.primal_dual])]:
+        solution = f"imported-{method}.hdf5"
+        imported = run([contact, "--fclib", exported, "--solution", solution]
+                       + settings, ranks)
+        compared = run([contact, "--fclib", exported, "--evaluate", solution,
+                        "--reference", exported], 0)
+        v, r = numbers(DIFFERENCE, compared)
+        checks += [
+            (f"FCLIB error of the imported problem's solution ({method})",
+             numbers(r"FCLIB error: (\S+)", imported)[0], limit),
+            (f"relative difference in v ({method})", v, limit),
+            (f"relative difference in r ({method})", r, limit),
+        ]
+    verdict(checks)
 
 
 if __name__ == "__main__":

@@ -145,36 +145,6 @@ namespace FrictionalContact
       return copy;
     }
 
-    /**
-     * max |a_ij - a_ji| / sqrt(|a_ii a_jj|) over the entries of @p A
-     * (duplicates summed): its asymmetry relative to the diagonal, which
-     * does not change when rows and columns are scaled (M of an LMGC90
-     * file mixes entries of 1e8 with entries of 1).
-     */
-    double
-    asymmetry(const std::vector<MatrixEntry> &A)
-    {
-      std::map<std::pair<unsigned int, unsigned int>, double> sum;
-      for (const auto &e : A)
-        sum[{e.row, e.column}] += e.value;
-      const auto diagonal = [&](const unsigned int i) {
-        const auto entry = sum.find({i, i});
-        return entry == sum.end() ? 0. : std::abs(entry->second);
-      };
-      double largest = 0;
-      for (const auto &[index, value] : sum)
-        {
-          const auto   mirror = sum.find({index.second, index.first});
-          const double other  = mirror == sum.end() ? 0. : mirror->second;
-          const double scale =
-            std::sqrt(diagonal(index.first) * diagonal(index.second));
-          if (value != other)
-            largest = std::max(largest,
-                               scale > 0 ? std::abs(value - other) / scale :
-                                           std::numeric_limits<double>::infinity());
-        }
-      return largest;
-    }
 
     /// A libfclib matrix (triplets) viewing @p entries.
     struct MatrixView
@@ -221,6 +191,33 @@ namespace FrictionalContact
       r[0] = -r[0];
     }
   } // namespace
+
+
+
+  double
+  asymmetry(const std::vector<MatrixEntry> &A)
+  {
+    std::map<std::pair<unsigned int, unsigned int>, double> sum;
+    for (const auto &e : A)
+      sum[{e.row, e.column}] += e.value;
+    const auto diagonal = [&](const unsigned int i) {
+      const auto entry = sum.find({i, i});
+      return entry == sum.end() ? 0. : std::abs(entry->second);
+    };
+    double largest = 0;
+    for (const auto &[index, value] : sum)
+      {
+        const auto   mirror = sum.find({index.second, index.first});
+        const double other  = mirror == sum.end() ? 0. : mirror->second;
+        const double scale =
+          std::sqrt(diagonal(index.first) * diagonal(index.second));
+        if (value != other)
+          largest = std::max(largest,
+                             scale > 0 ? std::abs(value - other) / scale :
+                                         std::numeric_limits<double>::infinity());
+      }
+    return largest;
+  }
 
 
 
@@ -285,11 +282,6 @@ namespace FrictionalContact
                      Input::to_text(*std::max_element(problem.mu.begin(),
                                                       problem.mu.end())) +
                      "; one coefficient >= 0 for all contacts is expected");
-    const double asymmetric = asymmetry(problem.M);
-    if (asymmetric > 1e-10)
-      fail(path, "has a matrix M that is not symmetric (max |m_ij - m_ji| / "
-                 "sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) +
-                 "); Kanno's method needs M symmetric positive definite");
     if (global->info != nullptr)
       {
         if (global->info->title != nullptr)

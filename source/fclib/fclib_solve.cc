@@ -3,6 +3,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <frictional_contact/fclib/fclib_export.h>
+#include <frictional_contact/fclib/fclib_newton.h>
 #include <frictional_contact/fclib/fclib_solve.h>
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
@@ -25,9 +26,6 @@ namespace FrictionalContact
   void
   FclibSolve<dim>::set_defaults(ParameterHandler &prm)
   {
-    prm.enter_subsection("Contact solver");
-    prm.set("Method", "accelerated primal-dual");
-    prm.leave_subsection();
     prm.enter_subsection("Linear solver");
     prm.set("Preconditioner", "jacobi");
     prm.leave_subsection();
@@ -56,11 +54,17 @@ namespace FrictionalContact
                   "jacobi: an FCLIB problem has no mesh, hence no "
                   "rigid-body modes for the AMG");
     prm.leave_subsection();
-    if (solver.method_name != "accelerated primal-dual")
-      Input::fail("Contact solver/Method",
-                  solver.method_name,
-                  "accelerated primal-dual: the other methods need the "
-                  "contact candidates of a mesh (one node each)");
+    if (solver.method->needs_smallest_eigenvalue())
+      {
+        const double asymmetric = asymmetry(fclib.M);
+        if (asymmetric > 1e-10)
+          throw InputError(
+            "the FCLIB file '" + file_name +
+            "' has a matrix M that is not symmetric (max |m_ij - m_ji| / "
+            "sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) +
+            "); Kanno's method needs M symmetric positive definite: use "
+            "<Contact solver/Method> = semismooth Newton");
+      }
 
     // Rank 0 holds everything.
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
@@ -125,33 +129,67 @@ namespace FrictionalContact
           << " contacts in " << dim << "D, mu = "
           << Input::to_text(fclib.mu[0]) << std::endl;
 
+    const Outcome outcome = solver.method->needs_smallest_eigenvalue() ?
+                              solve_by_primal_dual() :
+                              solve_by_newton();
+    pcout << (outcome.converged ? "Converged" : "Not converged") << " after "
+          << outcome.iterations << ' ' << solver.method->iteration_name()
+          << " iterations";
+    if (outcome.linear_iterations > 0)
+      pcout << " (" << outcome.linear_iterations << " CG iterations)";
+    pcout << std::endl;
+    const auto [res, error] = report(outcome.solution);
+    pcout << "FCLIB result: method=" << solver.method_name
+          << " converged=" << outcome.converged
+          << " iterations=" << outcome.iterations
+          << " seconds=" << outcome.seconds
+          << " error=" << Input::scientific(error) << std::endl;
+    if (!outcome.converged)
+      throw SolverError(outcome.failure + ". Residuals: force balance " +
+                        Input::scientific(res.force_balance) +
+                        ", complementarity " +
+                        Input::scientific(res.complementarity) +
+                        ", penetration " + Input::scientific(res.penetration) +
+                        "; no solution written");
+
+    if (!solution_file.empty())
+      {
+        write_fclib(mpi_communicator, solution_file, fclib, &outcome.solution);
+        pcout << "Wrote the problem and its solution to " << solution_file
+              << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  typename FclibSolve<dim>::Outcome
+  FclibSolve<dim>::solve_by_newton() const
+  {
+    const StoppingRule &stop = solver.method->stopping_rule();
+    pcout << "Solver: semismooth Newton (Alart-Curnier, sparse LU), stop at "
+             "FCLIB error <= "
+          << Input::to_text(stop.tolerance) << std::endl;
+    FclibNewton::Result result =
+      FclibNewton(fclib).solve(stop.tolerance, stop.max_iterations);
+    Outcome outcome;
+    outcome.converged  = result.converged;
+    outcome.iterations = result.iterations;
+    outcome.seconds    = result.seconds;
+    outcome.failure    = "the solve failed: " + result.failure;
+    outcome.solution   = std::move(result.solution);
+    return outcome;
+  }
+
+
+
+  template <int dim>
+  typename FclibSolve<dim>::Outcome
+  FclibSolve<dim>::solve_by_primal_dual()
+  {
     IncrementalProblem<dim> problem = incremental_problem();
     problem.largest_singular_value_T = contact->largest_singular_value();
-
-    // The paper's mu_pi: the smallest eigenvalue of M.
-    if (fclib.n <= largest_dense_size)
-      {
-        double smallest = 0;
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          {
-            LAPACKFullMatrix<double> dense(fclib.n, fclib.n);
-            for (const auto &e : fclib.M)
-              dense(e.row, e.column) += e.value;
-            dense.compute_eigenvalues();
-            smallest = std::numeric_limits<double>::max();
-            for (unsigned int i = 0; i < fclib.n; ++i)
-              smallest = std::min(smallest, dense.eigenvalue(i).real());
-          }
-        problem.smallest_eigenvalue_K =
-          Utilities::MPI::broadcast(mpi_communicator, smallest, 0);
-      }
-    else
-      problem.smallest_eigenvalue_K =
-        compute_smallest_eigenvalue(M,
-                                    linear_solver,
-                                    solver.eigenvalue_tolerance,
-                                    solver.lanczos_vectors)
-          .value;
+    problem.smallest_eigenvalue_K    = smallest_eigenvalue_of_M();
     pcout << "    smallest eigenvalue of M = "
           << Input::scientific(problem.smallest_eigenvalue_K)
           << ", largest singular value of H = "
@@ -179,33 +217,43 @@ namespace FrictionalContact
     pcout << "Solver: " << solver.method->describe() << std::endl;
     Vector                      du(f);
     std::vector<Tensor<1, dim>> r(contact->n_local());
-    du                           = 0;
-    const SolveStatistics result = solver.method->solve(problem, linear_solver, du, r, false);
+    du = 0;
+    const SolveStatistics result =
+      solver.method->solve(problem, linear_solver, du, r, false);
+    Outcome outcome;
+    outcome.converged         = result.converged;
+    outcome.iterations        = result.iterations;
+    outcome.linear_iterations = result.linear_iterations;
+    outcome.seconds           = result.seconds;
+    outcome.failure           = result.failure;
+    outcome.solution          = to_fclib(du, r);
+    return outcome;
+  }
 
-    const Residuals &res = result.residuals;
-    pcout << (result.converged ? "Converged" : "Not converged") << " after "
-          << result.iterations << ' ' << solver.method->iteration_name()
-          << " iterations (" << result.linear_iterations << " CG iterations)"
-          << std::endl;
-    const FclibSolution solution = to_fclib(du, r);
-    const double        error    = report(solution);
-    pcout << "FCLIB result: method=" << solver.method_name
-          << " converged=" << result.converged
-          << " iterations=" << result.iterations
-          << " seconds=" << result.seconds << " error=" << Input::scientific(error)
-          << std::endl;
-    if (!result.converged)
-      throw SolverError(result.failure + ". Residuals: force balance " +
-                        Input::scientific(res.force_balance) + ", complementarity " +
-                        Input::scientific(res.complementarity) + ", penetration " +
-                        Input::scientific(res.penetration) + "; no solution written");
 
-    if (!solution_file.empty())
+
+  template <int dim>
+  double
+  FclibSolve<dim>::smallest_eigenvalue_of_M()
+  {
+    if (fclib.n > largest_dense_size)
+      return compute_smallest_eigenvalue(M,
+                                         linear_solver,
+                                         solver.eigenvalue_tolerance,
+                                         solver.lanczos_vectors)
+        .value;
+    double smallest = 0;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        write_fclib(mpi_communicator, solution_file, fclib, &solution);
-        pcout << "Wrote the problem and its solution to " << solution_file
-              << std::endl;
+        LAPACKFullMatrix<double> dense(fclib.n, fclib.n);
+        for (const auto &e : fclib.M)
+          dense(e.row, e.column) += e.value;
+        dense.compute_eigenvalues();
+        smallest = std::numeric_limits<double>::max();
+        for (unsigned int i = 0; i < fclib.n; ++i)
+          smallest = std::min(smallest, dense.eigenvalue(i).real());
       }
+    return Utilities::MPI::broadcast(mpi_communicator, smallest, 0);
   }
 
 
@@ -232,7 +280,7 @@ namespace FrictionalContact
 
 
   template <int dim>
-  double
+  std::pair<Residuals, double>
   FclibSolve<dim>::report(const FclibSolution &solution) const
   {
     // The residuals in our form: du = v, r = (-r_n, r_t).
@@ -251,7 +299,7 @@ namespace FrictionalContact
           << ", complementarity " << Input::scientific(res.complementarity)
           << ", penetration " << Input::scientific(res.penetration) << std::endl
           << "FCLIB error: " << Input::scientific(error) << std::endl;
-    return error;
+    return {res, error};
   }
 
 

@@ -30,16 +30,13 @@ namespace FrictionalContact
                       Patterns::Double(0.),
                       "The dual step length alpha_0 of Algorithm 2 (> 0; see "
                       "Scaling); beta_0 = 1 / (alpha_0 sigma_T^2).");
-    prm.declare_entry("Tolerance",
-                      "1e-12",
-                      Patterns::Double(0.),
-                      "Stop when the step |du_{k+1} - du_k| is below this "
-                      "(see Scaling).");
-    prm.declare_entry("Maximum iterations",
-                      "100000",
-                      Patterns::Integer(1),
-                      "Primal-dual iterations allowed per increment. A solve "
-                      "that needs more fails with its residuals.");
+    StoppingRule::declare_parameters(
+      prm,
+      "1e-12",
+      "Stop when the step |du_{k+1} - du_k| is below this (see Scaling).",
+      "100000",
+      "Primal-dual iterations allowed per increment. A solve that needs "
+      "more fails with its residuals.");
     prm.declare_entry("Stagnation window",
                       "10000",
                       Patterns::Integer(1),
@@ -70,19 +67,13 @@ namespace FrictionalContact
   {
     initial_alpha  = prm.get_double("Initial alpha");
     paper_scaling  = prm.get("Scaling") == "paper";
-    tolerance      = prm.get_double("Tolerance");
-    max_iterations = prm.get_integer("Maximum iterations");
+    this->stop.parse_parameters(prm, "Accelerated primal-dual");
     step_tolerance = prm.get_double("Primal step tolerance");
     stagnation_window = prm.get_integer("Stagnation window");
     if (!(initial_alpha > 0))
       Input::fail("Contact solver/Accelerated primal-dual/Initial alpha",
                   Input::to_text(initial_alpha),
                   "a positive number is expected");
-    if (!(tolerance > 0))
-      Input::fail("Contact solver/Accelerated primal-dual/Tolerance",
-                  Input::to_text(tolerance),
-                  "a positive number is expected (a step of exactly 0 is "
-                  "never reached in floating point), e.g. 1e-12");
   }
 
 
@@ -95,12 +86,12 @@ namespace FrictionalContact
       return "accelerated primal-dual (Kanno, Algorithm 2), as published: "
              "alpha_0 = " +
              Input::to_text(initial_alpha) + ", stop at |du_k+1 - du_k| <= " +
-             Input::to_text(tolerance);
+             Input::to_text(this->stop.tolerance);
     return "accelerated primal-dual (Kanno, Algorithm 2), scaled: alpha_0 = " +
            Input::to_text(initial_alpha) +
            " k (k: normal stiffness of the contact nodes), stop at "
            "max |du_k+1 - du_k| <= " +
-           Input::to_text(tolerance) + " L";
+           Input::to_text(this->stop.tolerance) + " L";
   }
 
 
@@ -127,7 +118,7 @@ namespace FrictionalContact
     // The step lengths and the stopping test, in the units of the problem
     // or (Scaling = problem) from its own scales.
     double alpha     = initial_alpha;
-    double step_goal = tolerance;
+    double step_goal = this->stop.tolerance;
     if (!paper_scaling)
       {
         double stiffness = 0;
@@ -143,7 +134,7 @@ namespace FrictionalContact
     SolveStatistics result;
     double          best_step     = std::numeric_limits<double>::max();
     unsigned int    last_progress = 0;
-    for (unsigned int k = 0; k < max_iterations; ++k)
+    for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
         // Dual step (lines 4-7): modified gap, then projection onto F.
         for (unsigned int j = 0; j < c_local; ++j)
@@ -234,7 +225,7 @@ namespace FrictionalContact
           }
       }
     if (!result.converged && result.failure.empty())
-      result.failure = "no convergence in " + std::to_string(max_iterations) +
+      result.failure = "no convergence in " + std::to_string(this->stop.max_iterations) +
                        " iterations (last |du_k+1 - du_k| = " +
                        Input::to_text(result.last_step) + ", tolerance " +
                        Input::to_text(step_goal) +

@@ -362,21 +362,18 @@ namespace FrictionalContact
   void
   SemismoothNewtonSolver<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      Patterns::Double(0., 1.),
-                      "Stop when the paper's three residuals, with the "
-                      "reactions projected onto the friction cones, are "
-                      "small: force balance below this times |p|, "
-                      "penetration below this times the length scale L (the "
-                      "largest gap or displacement), complementarity below "
-                      "this times |p| L. Each term of the complementarity sum "
-                      "is non-negative for reactions in the cone, so the sum "
-                      "measures every node.");
-    prm.declare_entry("Maximum iterations",
-                      "100",
-                      Patterns::Integer(1),
-                      "Newton iterations allowed per increment.");
+    StoppingRule::declare_parameters(
+      prm,
+      "1e-10",
+      "Stop when the paper's three residuals, with the reactions projected "
+      "onto the friction cones, are small: force balance below this times "
+      "|p|, penetration below this times the length scale L (the largest gap "
+      "or displacement), complementarity below this times |p| L. Each term "
+      "of the complementarity sum is non-negative for reactions in the cone, "
+      "so the sum measures every node. For an FCLIB problem (--fclib): stop "
+      "when FCLIB's error measure is below this.",
+      "100",
+      "Newton iterations allowed per increment.");
     prm.declare_entry("Tangential parameter",
                       "0.1",
                       Patterns::Double(0.),
@@ -398,15 +395,9 @@ namespace FrictionalContact
   void
   SemismoothNewtonSolver<dim>::parse_parameters(ParameterHandler &prm)
   {
-    tolerance        = prm.get_double("Tolerance");
-    max_iterations   = prm.get_integer("Maximum iterations");
+    this->stop.parse_parameters(prm, "Semismooth Newton");
     linear_reduction = prm.get_double("Linear reduction");
     tangential_factor = prm.get_double("Tangential parameter");
-    if (!(tolerance > 0))
-      Input::fail("Contact solver/Semismooth Newton/Tolerance",
-                  Input::to_text(tolerance),
-                  "a positive number is expected (residuals of exactly 0 "
-                  "are never reached in floating point), e.g. 1e-10");
   }
 
 
@@ -416,7 +407,7 @@ namespace FrictionalContact
   SemismoothNewtonSolver<dim>::describe() const
   {
     return "semismooth Newton (primal-dual active set), tolerance " +
-           Input::to_text(tolerance);
+           Input::to_text(this->stop.tolerance);
   }
 
 
@@ -476,7 +467,7 @@ namespace FrictionalContact
     double                    reduction     = linear_reduction;
     unsigned int              last_progress = 0;
 
-    for (unsigned int k = 0; k < max_iterations; ++k)
+    for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
         // Done when the residuals of the current iterate are small.
         if (!first)
@@ -484,9 +475,9 @@ namespace FrictionalContact
             const double length =
               std::max(problem.length_scale, du.linfty_norm());
             const Residuals &res = result.residuals;
-            if (res.force_balance <= tolerance * load_norm &&
-                res.penetration <= tolerance * length &&
-                res.complementarity <= tolerance * load_norm * length)
+            if (res.force_balance <= this->stop.tolerance * load_norm &&
+                res.penetration <= this->stop.tolerance * length &&
+                res.complementarity <= this->stop.tolerance * load_norm * length)
               {
                 result.converged = true;
                 break;
@@ -560,7 +551,7 @@ namespace FrictionalContact
         w                    = 0;
         const double initial = rhs.l2_norm();
         const double goal =
-          std::max(reduction * initial, 0.1 * tolerance * load_norm);
+          std::max(reduction * initial, 0.1 * this->stop.tolerance * load_norm);
         unsigned int linear_iterations = 0;
         try
           {
@@ -666,7 +657,7 @@ namespace FrictionalContact
       }
     r = admissible_r;
     if (!result.converged && result.failure.empty())
-      result.failure = "no convergence in " + std::to_string(max_iterations) +
+      result.failure = "no convergence in " + std::to_string(this->stop.max_iterations) +
                        " Newton iterations; raise <Contact solver/Semismooth "
                        "Newton/Maximum iterations> or use smaller increments";
     result.amg_setups = linear_solver.n_amg_setups - setups;

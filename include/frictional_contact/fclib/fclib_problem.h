@@ -53,8 +53,8 @@ namespace FrictionalContact
 
   /**
    * Reads the global problem of the FCLIB file @p path with libfclib and
-   * checks it: sizes, finite values, a symmetric M (to 1e-10 relative to
-   * its diagonal), no equality constraints (G), one friction coefficient. Throws an InputError naming
+   * checks it: sizes, finite values, no equality constraints (G), one
+   * friction coefficient. Throws an InputError naming
    * the file and what is wrong.
    */
   FclibProblem
@@ -74,6 +74,15 @@ namespace FrictionalContact
   write_fclib(const std::string   &path,
               const FclibProblem  &problem,
               const FclibSolution *solution);
+
+  /**
+   * max |a_ij - a_ji| / sqrt(|a_ii a_jj|) over the entries of @p A
+   * (duplicates summed): its asymmetry relative to the diagonal, which
+   * does not change when rows and columns are scaled (M of an LMGC90
+   * file mixes entries of 1e8 with entries of 1).
+   */
+  double
+  asymmetry(const std::vector<MatrixEntry> &A);
 
   /// u = H^T v + w.
   std::vector<double>

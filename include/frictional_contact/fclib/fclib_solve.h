@@ -15,19 +15,21 @@
 namespace FrictionalContact
 {
   /**
-   * The program's --fclib mode: an FCLIB global problem as one incremental
-   * problem for our contact solvers (doc/fclib.md). Owns the problem (every
-   * rank has the file's arrays; rank 0 holds the matrices and all
-   * contacts), M in Trilinos format, the sparse T, and the solvers chosen
-   * in the parameter file. Prints the paper's three residuals and FCLIB's
-   * error measure.
+   * The program's --fclib mode (doc/fclib.md): solves an FCLIB global
+   * problem with the method of <Contact solver/Method>. The semismooth
+   * Newton method (the default) works on FCLIB's own form (FclibNewton);
+   * the accelerated primal-dual method gets it as one incremental problem
+   * in our form. Owns the problem (every rank has the file's arrays; rank 0
+   * holds the matrices and all contacts), M in Trilinos format, the sparse
+   * T, and the solvers chosen in the parameter file. Prints the paper's
+   * three residuals and FCLIB's error measure.
    */
   template <int dim>
   class FclibSolve
   {
   public:
-    /// Entries that differ from a scene's defaults in this mode: the
-    /// accelerated primal-dual method, Jacobi-preconditioned CG.
+    /// Entries that differ from a scene's defaults in this mode:
+    /// Jacobi-preconditioned CG (for the accelerated primal-dual method).
     static void
     set_defaults(ParameterHandler &prm);
 
@@ -56,6 +58,31 @@ namespace FrictionalContact
   private:
     using Vector = TrilinosWrappers::MPI::Vector;
 
+    /// What a method's solve gives, in FCLIB's form on every rank.
+    struct Outcome
+    {
+      bool          converged         = false;
+      unsigned int  iterations        = 0;
+      unsigned int  linear_iterations = 0;
+      double        seconds           = 0;
+      std::string   failure;
+      FclibSolution solution;
+    };
+
+    /// FclibNewton on the file's arrays (every rank solves the whole
+    /// problem: no communication, the same result everywhere).
+    Outcome
+    solve_by_newton() const;
+
+    /// Kanno's Algorithm 2 on our form of the problem, with mu_pi and
+    /// sigma_T computed.
+    Outcome
+    solve_by_primal_dual();
+
+    /// mu_pi: LAPACK up to 1000 unknowns, PARPACK above.
+    double
+    smallest_eigenvalue_of_M();
+
     /// Our form of the problem (T = H with the normal column negated).
     IncrementalProblem<dim>
     incremental_problem() const;
@@ -64,8 +91,8 @@ namespace FrictionalContact
     FclibSolution
     to_fclib(const Vector &du, const std::vector<Tensor<1, dim>> &r) const;
 
-    /// Prints the residuals of (v, r) and FCLIB's error; returns the error.
-    double
+    /// Prints the residuals of (v, r) and FCLIB's error; returns both.
+    std::pair<Residuals, double>
     report(const FclibSolution &solution) const;
 
     /// x on rank 0 as a Trilinos vector; and back, on every rank.

@@ -11,6 +11,32 @@
 namespace FrictionalContact
 {
   /**
+   * When a method stops: its tolerance (each method says what it bounds)
+   * and the iterations it may take per increment. Every method has the
+   * entries "Tolerance" and "Maximum iterations" in its subsection.
+   */
+  struct StoppingRule
+  {
+    double       tolerance      = 0;
+    unsigned int max_iterations = 0;
+
+    /// Declares the two entries with the method's defaults and texts.
+    static void
+    declare_parameters(ParameterHandler  &prm,
+                       const std::string &default_tolerance,
+                       const std::string &tolerance_text,
+                       const std::string &default_max_iterations,
+                       const std::string &max_iterations_text);
+
+    /// Reads them; a tolerance that is not positive is an InputError that
+    /// names <Contact solver/@p subsection/Tolerance>.
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &subsection);
+  };
+
+
+
+  /**
    * A method that solves one incremental contact problem. Methods register
    * themselves with FRICTIONAL_CONTACT_REGISTER_PLUGIN(ContactSolver, ...)
    * and are chosen by `Contact solver/Method`; each reads its parameters
@@ -55,6 +81,12 @@ namespace FrictionalContact
           std::vector<Tensor<1, dim>>   &r,
           const bool                     record_history) const = 0;
 
+    const StoppingRule &
+    stopping_rule() const
+    {
+      return stop;
+    }
+
     /// Where progress lines go (every "Report every" iterations).
     void
     set_output(const ConditionalOStream &stream, const unsigned int every)
@@ -64,6 +96,8 @@ namespace FrictionalContact
     }
 
   protected:
+    StoppingRule stop;
+
     /// Prints a progress line for iteration @p k if one is due.
     void
     report(const unsigned int k, const HistoryRow &row) const;

@@ -52,9 +52,7 @@ namespace FrictionalContact
   private:
     double       initial_alpha;
     bool         paper_scaling;
-    double       tolerance;
     double       step_tolerance;
-    unsigned int max_iterations;
     unsigned int stagnation_window;
   };
 } // namespace FrictionalContact

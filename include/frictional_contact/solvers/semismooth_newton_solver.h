@@ -55,8 +55,6 @@ namespace FrictionalContact
           const bool                     record_history) const override;
 
   private:
-    double       tolerance;
-    unsigned int max_iterations;
     double       linear_reduction;
     double       tangential_factor;
   };
