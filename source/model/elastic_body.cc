@@ -102,14 +102,30 @@ namespace FrictionalContact
 
 
   template <int dim>
+  ElasticBody<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
+    : quadrature(2)
+    , face_quadrature(2)
+    , fe_values(fe,
+                quadrature,
+                update_values | update_gradients | update_JxW_values)
+    , fe_face_values(fe, face_quadrature, update_values | update_JxW_values)
+    , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+    , cell_load(fe.n_dofs_per_cell())
+    , dof_indices(fe.n_dofs_per_cell())
+  {}
+
+
+
+  template <int dim>
   void
   ElasticBody<dim>::assemble_cell(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    FEValues<dim>                                        &fe_values,
-    FEFaceValues<dim>                                    &fe_face_values,
-    FullMatrix<double>                                   &cell_matrix,
-    dealii::Vector<double>                               &cell_load) const
+    CellScratch                                          &scratch) const
   {
+    FEValues<dim>                   &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
+    FullMatrix<double>              &cell_matrix    = scratch.cell_matrix;
+    dealii::Vector<double>          &cell_load      = scratch.cell_load;
     const FEValuesExtractors::Vector displacement(0);
     const SymmetricTensor<4, dim>   &C             = material.stress_strain_tensor();
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
@@ -156,20 +172,8 @@ namespace FrictionalContact
   void
   ElasticBody<dim>::assemble()
   {
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim>         fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-
-    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
-    dealii::Vector<double> cell_load(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    CellScratch        scratch(fe);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
 
     stiffness = 0;
     load      = 0;
@@ -177,12 +181,16 @@ namespace FrictionalContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
+          assemble_cell(cell, scratch);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            total_here[fe.system_to_component_index(i).first] += cell_load(i);
-          cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_load, dof_indices, stiffness, load);
+            total_here[fe.system_to_component_index(i).first] +=
+              scratch.cell_load(i);
+          cell->get_dof_indices(scratch.dof_indices);
+          constraints.distribute_local_to_global(scratch.cell_matrix,
+                                                 scratch.cell_load,
+                                                 scratch.dof_indices,
+                                                 stiffness,
+                                                 load);
         }
     stiffness.compress(VectorOperation::add);
     load.compress(VectorOperation::add);
@@ -215,31 +223,22 @@ namespace FrictionalContact
                                    const AffineConstraints<double> &distribute,
                                    Vector                          &force) const
   {
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim>         fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
-    dealii::Vector<double> cell_load(dofs_per_cell), cell_u(dofs_per_cell),
-      cell_force(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    CellScratch            scratch(fe);
+    dealii::Vector<double> cell_u(fe.n_dofs_per_cell()),
+      cell_force(fe.n_dofs_per_cell());
 
     force = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_load);
+          assemble_cell(cell, scratch);
           cell->get_dof_values(u_ghosted, cell_u);
-          cell_matrix.vmult(cell_force, cell_u);
-          cell_force.add(-load_factor, cell_load);
-          cell->get_dof_indices(dof_indices);
-          distribute.distribute_local_to_global(cell_force, dof_indices, force);
+          scratch.cell_matrix.vmult(cell_force, cell_u);
+          cell_force.add(-load_factor, scratch.cell_load);
+          cell->get_dof_indices(scratch.dof_indices);
+          distribute.distribute_local_to_global(cell_force,
+                                                scratch.dof_indices,
+                                                force);
         }
     force.compress(VectorOperation::add);
   }

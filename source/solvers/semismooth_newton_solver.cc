@@ -1,360 +1,269 @@
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/solver_control.h>
 
 #include <frictional_contact/base/plugins.h>
+#include <frictional_contact/solvers/semismooth_newton_linearization.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
+#include <numeric>
 #include <sstream>
 
 namespace FrictionalContact
 {
-  namespace
+  namespace SemismoothNewton
   {
-    using Vector = TrilinosWrappers::MPI::Vector;
-
-    /// What the linear problem of a Newton iteration prescribes at a node.
-    enum class NodeCondition : unsigned char
-    {
-      none,         // free: no force
-      normal_fixed, // slip: normal displacement fixed, friction force given
-      all_fixed     // stick: normal and tangential displacement fixed
-    };
-
     /**
-     * The orthogonal projection onto displacements that leave the fixed
-     * directions of the node conditions alone: removes the normal part at
-     * slipping nodes and the whole nodal vector at sticking ones.
-     */
-    template <int dim>
-    class NodeProjection
-    {
-    public:
-      NodeProjection(const ContactMap<dim>             &contact,
-                     const std::vector<NodeCondition> &conditions)
-        : contact(contact)
-        , conditions(conditions)
-      {}
-
-      void
-      apply(Vector &v) const
-      {
-        for (unsigned int j = 0; j < contact.n_local(); ++j)
-          if (conditions[j] != NodeCondition::none)
-            {
-              Tensor<1, dim> fixed_part = contact.local_part(j, v);
-              if (conditions[j] == NodeCondition::normal_fixed)
-                for (unsigned int d = 1; d < dim; ++d)
-                  fixed_part[d] = 0;
-              contact.add_reaction(j, -fixed_part, v);
-            }
-      }
-
-    private:
-      const ContactMap<dim>             &contact;
-      const std::vector<NodeCondition> &conditions;
-    };
-
-    /**
-     * The Newton operator on the subspace of the node conditions:
-     * w -> P ((I + C) K w + B w). C couples the friction force of a
-     * slipping node to its normal reaction, so that its tangential equation
-     * reads T_t^T R + mu n (t_n^T R) + kappa Q T_t^T du = 0 with R = K du - p:
-     * r_t = -mu r_n n - kappa Q u_t, the linearisation of
-     * r_t = mu |r_n| zeta / |zeta| (Q = I - n n^T, the tangential directions
-     * across the slip; B is this Robin term, zero in 2D). Without slipping
-     * nodes the operator is P K P, symmetric.
-     */
-    template <int dim>
-    class ContactStiffness
-    {
-    public:
-      ContactStiffness(const TrilinosWrappers::SparseMatrix &K,
-                       const NodeProjection<dim>            &P,
-                       const ContactMap<dim>                 &contact,
-                       const std::vector<NodeCondition>     &conditions,
-                       const std::vector<Tensor<1, dim>>    &slip_direction,
-                       const std::vector<double>            &robin,
-                       const double                          mu)
-        : K(K)
-        , P(P)
-        , contact(contact)
-        , conditions(conditions)
-        , slip_direction(slip_direction)
-        , robin(robin)
-        , mu(mu)
-      {}
-
-      void
-      vmult(Vector &dst, const Vector &src) const
-      {
-        K.vmult(dst, src);
-        couple(dst);
-        add_robin(src, 1., dst);
-        P.apply(dst);
-      }
-
-      /// v += C v: the friction force that goes with the normal reaction.
-      void
-      couple(Vector &v) const
-      {
-        if (mu == 0)
-          return;
-        for (unsigned int j = 0; j < contact.n_local(); ++j)
-          if (conditions[j] == NodeCondition::normal_fixed)
-            {
-              const double r_n = contact.local_part(j, v)[0];
-              contact.add_reaction(j, mu * r_n * slip_direction[j], v);
-            }
-      }
-
-      /// dst += factor B u.
-      void
-      add_robin(const Vector &u, const double factor, Vector &dst) const
-      {
-        if (mu == 0 || dim == 2)
-          return;
-        for (unsigned int j = 0; j < contact.n_local(); ++j)
-          if (conditions[j] == NodeCondition::normal_fixed && robin[j] > 0)
-            {
-              Tensor<1, dim> u_t = contact.local_part(j, u);
-              u_t[0]             = 0;
-              u_t -= (u_t * slip_direction[j]) * slip_direction[j];
-              contact.add_reaction(j, factor * robin[j] * u_t, dst);
-            }
-      }
-
-    private:
-      const TrilinosWrappers::SparseMatrix &K;
-      const NodeProjection<dim>            &P;
-      const ContactMap<dim>                 &contact;
-      const std::vector<NodeCondition>     &conditions;
-      const std::vector<Tensor<1, dim>>    &slip_direction;
-      const std::vector<double>            &robin;
-      const double                          mu;
-    };
-
-    /// The node conditions of an active-set step and what goes with them.
-    template <int dim>
-    struct ActiveSets
-    {
-      explicit ActiveSets(const std::vector<double> &c_t)
-        : conditions(c_t.size(), NodeCondition::none)
-        , bound(c_t.size(), 0.)
-        , slip_direction(c_t.size())
-        , robin(c_t.size(), 0.)
-        , c_t(c_t)
-        , flips(c_t.size(), 0)
-      {}
-
-      std::vector<NodeCondition>  conditions;
-      /// mu max(sigma_j, 0): the friction bound of each node.
-      std::vector<double>         bound;
-      std::vector<Tensor<1, dim>> slip_direction;
-      /// kappa_j of the Robin term across the slip (3D).
-      std::vector<double>         robin;
-      /// c_t per node, and how often its stick/slip state went back and
-      /// forth.
-      std::vector<double>       c_t;
-      std::vector<unsigned int> flips;
-    };
-
-    /**
-     * Sorts the nodes by the augmented reactions of (du, r): free where the
-     * augmented normal reaction sigma_j is not positive, stick inside the
-     * friction bound, slip on it. Returns whether a node of this rank
-     * changed its condition.
+     * Moves du onto the node conditions: the normal part of every active
+     * node to its gap, the tangential part of sticking nodes to the
+     * obstacle's slip. Returns whether a node of this rank slips.
      */
     template <int dim>
     bool
-    classify(const IncrementalProblem<dim>     &problem,
-             const Vector                      &du,
-             const std::vector<Tensor<1, dim>> &r,
-             const std::vector<double>         &c,
-             const double                       mu_k,
-             ActiveSets<dim>                   &sets)
+    impose_node_conditions(const IncrementalProblem<dim>     &problem,
+                           const std::vector<NodeCondition> &conditions,
+                           TrilinosWrappers::MPI::Vector    &du)
     {
-      const unsigned int n       = c.size();
-      bool               changed = false;
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-        const double sigma = -r[j][0] - c[j] * (problem.gaps[j] - u_j[0]);
-        Tensor<1, dim> zeta = r[j] - sets.c_t[j] * u_j;
-        zeta[0]             = 0;
-        const double zeta_norm = zeta.norm();
-        const NodeCondition before = sets.conditions[j];
-        const Tensor<1, dim> direction_before = sets.slip_direction[j];
-        sets.bound[j] = mu_k * std::max(sigma, 0.);
-        if (!(sigma > 0))
-          sets.conditions[j] = NodeCondition::none;
-        else if (mu_k > 0 && zeta_norm < sets.bound[j])
-          sets.conditions[j] = NodeCondition::all_fixed;
-        else
-          {
-            sets.conditions[j] = NodeCondition::normal_fixed;
-            sets.slip_direction[j] =
-              zeta_norm > 0 ? zeta / zeta_norm : Tensor<1, dim>();
-            // kappa = s c_t / (|zeta| - s), bounded where |zeta| ~ s.
-            sets.robin[j] = zeta_norm > sets.bound[j] ?
-                         std::min(sets.bound[j] * sets.c_t[j] / (zeta_norm - sets.bound[j]),
-                                  1e3 * c[j]) :
-                         0.;
-          }
-        changed = changed || sets.conditions[j] != before;
-        // Anti-cycling: stick <-> slip, or a reversed slip direction.
-        const bool flipped =
-          before != NodeCondition::none &&
-          sets.conditions[j] != NodeCondition::none &&
-          (sets.conditions[j] != before ||
-           (before == NodeCondition::normal_fixed &&
-            sets.slip_direction[j] * direction_before < 0));
-        if (mu_k > 0 && flipped && ++sets.flips[j] >= 2)
-          {
-            sets.c_t[j] *= 0.1;
-            sets.flips[j] = 0;
-          }
-      }
-      return changed;
+      bool any_slip = false;
+      for (unsigned int j = 0; j < conditions.size(); ++j)
+        {
+          if (conditions[j] == NodeCondition::none)
+            continue;
+          const Tensor<1, dim> current = problem.contact.local_part(j, du);
+          Tensor<1, dim>       target  = current;
+          target[0]                    = problem.gaps[j];
+          if (conditions[j] == NodeCondition::all_fixed)
+            for (unsigned int d = 1; d < dim; ++d)
+              target[d] = problem.obstacle_slip[j][d];
+          problem.contact.add_reaction(j, target - current, du);
+          if (conditions[j] == NodeCondition::normal_fixed)
+            any_slip = true;
+        }
+      return any_slip;
     }
 
 
 
     /**
-     * The merit of the line search at the point t of the segment from the
-     * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
-     * complementarity functions of all nodes, scaled by c_j, plus the
-     * squared force balance residual (linear along the segment), scaled by
-     * the mean c. Collective.
+     * The slipping nodes' terms of the right-hand side: the friction force
+     * coupled to the normal reaction and the Robin term across the slip
+     * direction, - B (du_D - the obstacle's slip).
      */
     template <int dim>
-    class MeritAlongStep
+    void
+    add_slip_terms(const IncrementalProblem<dim>       &problem,
+                   const ContactStiffness<dim>         &A,
+                   const ActiveSets<dim>               &sets,
+                   const TrilinosWrappers::MPI::Vector &du,
+                   TrilinosWrappers::MPI::Vector       &rhs)
     {
-    public:
-      MeritAlongStep(const IncrementalProblem<dim>     &problem,
-                     const std::vector<double>         &c,
-                     const std::vector<double>         &c_t,
-                     const double                       mu_k,
-                     const double                       mean_c,
-                     const Vector                      &du_0,
-                     const Vector                      &du_1,
-                     const std::vector<Tensor<1, dim>> &r_0,
-                     const std::vector<Tensor<1, dim>> &r_1,
-                     const Vector                      &balance_0,
-                     const Vector                      &balance_1,
-                     Vector                            &scratch)
-        : problem(problem)
-        , c(c)
-        , c_t(c_t)
-        , mu_k(mu_k)
-        , mean_c(mean_c)
-        , du_0(du_0)
-        , du_1(du_1)
-        , r_0(r_0)
-        , r_1(r_1)
-      {
-        balance_a = balance_0.norm_sqr();
-        balance_b = balance_0 * balance_1 - balance_a;
-        scratch   = balance_1;
-        scratch -= balance_0;
-        balance_c = scratch.norm_sqr();
-      }
-
-      double
-      operator()(const double t) const
-      {
-        double sum = 0;
-        for (unsigned int j = 0; j < c.size(); ++j)
+      A.couple(rhs);
+      A.add_robin(du, -1., rhs);
+      if (dim < 3)
+        return;
+      for (unsigned int j = 0; j < sets.conditions.size(); ++j)
+        if (sets.conditions[j] == NodeCondition::normal_fixed)
           {
-            const Tensor<1, dim> u_j =
-              (1 - t) * problem.relative_displacement(j, du_0) +
-              t * problem.relative_displacement(j, du_1);
-            const Tensor<1, dim> r_j   = (1 - t) * r_0[j] + t * r_1[j];
-            const double         gap   = problem.gaps[j] - u_j[0];
-            const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
-            const double bound_j = mu_k * std::max(0., -(r_j[0] + c[j] * gap));
-            Tensor<1, dim> z     = r_j - c_t[j] * u_j;
-            z[0]                 = 0;
-            if (z.norm() > bound_j)
-              z *= bound_j / z.norm();
-            Tensor<1, dim> phi_t = r_j - z;
-            phi_t[0]             = 0;
-            sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
+            Tensor<1, dim> slip = problem.obstacle_slip[j];
+            slip -= (slip * sets.slip_direction[j]) * sets.slip_direction[j];
+            problem.contact.add_reaction(j, sets.robin[j] * slip, rhs);
           }
-        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
-               (balance_a + 2 * t * balance_b + t * t * balance_c) / mean_c;
-      }
-
-    private:
-      const IncrementalProblem<dim>     &problem;
-      const std::vector<double>         &c;
-      const std::vector<double>         &c_t;
-      const double                       mu_k;
-      const double                       mean_c;
-      const Vector                      &du_0;
-      const Vector                      &du_1;
-      const std::vector<Tensor<1, dim>> &r_0;
-      const std::vector<Tensor<1, dim>> &r_1;
-      double                             balance_a, balance_b, balance_c;
-    };
+    }
 
 
 
-    /// P M P with M the preconditioner of K (the AMG, unless <Linear
-    /// solver/Preconditioner> asks for Jacobi).
+    /**
+     * The reactions: the residual K du - p (in @p K_du_minus_p) at the
+     * active nodes, zero elsewhere. They may leave the cones on the way;
+     * the residuals judge their projection onto the cones.
+     */
     template <int dim>
-    class ProjectedPreconditioner
+    void
+    active_reactions(const ContactMap<dim>               &contact,
+                     const std::vector<NodeCondition>   &conditions,
+                     const TrilinosWrappers::MPI::Vector &K_du_minus_p,
+                     std::vector<Tensor<1, dim>>         &r)
     {
-    public:
-      ProjectedPreconditioner(const ShiftedStiffnessSolver &stiffness_solver,
-                              const NodeProjection<dim>    &P)
-        : stiffness_solver(stiffness_solver)
-        , P(P)
-      {}
+      for (unsigned int j = 0; j < conditions.size(); ++j)
+        r[j] = conditions[j] == NodeCondition::none ?
+                 Tensor<1, dim>() :
+                 contact.local_part(j, K_du_minus_p);
+    }
+
+
+
+    /**
+     * Whether the merit still drops: the best value so far must fall by a
+     * tenth within 25 Newton steps.
+     */
+    struct ProgressMonitor
+    {
+      double       best_merit    = std::numeric_limits<double>::max();
+      unsigned int last_progress = 0;
 
       void
-      vmult(Vector &dst, const Vector &src) const
+      restart(const unsigned int k)
       {
-        stiffness_solver.precondition_stiffness(dst, src);
-        P.apply(dst);
+        best_merit    = std::numeric_limits<double>::max();
+        last_progress = k;
       }
 
-    private:
-      const ShiftedStiffnessSolver &stiffness_solver;
-      const NodeProjection<dim>    &P;
+      /// Records the merit of step @p k; true if it has stalled.
+      bool
+      stalled(const unsigned int k, const double merit)
+      {
+        if (merit < 0.9 * best_merit)
+          {
+            best_merit    = merit;
+            last_progress = k;
+          }
+        return k > last_progress + 25;
+      }
     };
+
+    /// The mean of c_j over all candidates.
+    template <int dim>
+    double
+    mean_normal_stiffness(const ContactMap<dim>     &contact,
+                          const std::vector<double> &c,
+                          const MPI_Comm             comm)
+    {
+      const double sum = std::accumulate(c.begin(), c.end(), 0.);
+      return Utilities::MPI::sum(sum, comm) /
+             std::max<double>(1, contact.n_candidates());
+    }
+
+
+
+    /// Whether any candidate on any rank has a reaction (a warm start).
+    template <int dim>
+    bool
+    any_reaction(const std::vector<Tensor<1, dim>> &r, const MPI_Comm comm)
+    {
+      double largest = 0;
+      for (const auto &r_j : r)
+        largest = std::max(largest, r_j.norm());
+      return Utilities::MPI::max(largest, comm) > 0;
+    }
+
+
+
     /**
-     * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
-     * a slipping node makes A non-symmetric, else CG. Returns the Krylov
-     * iterations; throws SolverControl::NoConvergence.
+     * The step t along the segment from the previous iterate: halved from
+     * 1 (down to 1/64) until the merit drops enough.
+     */
+    template <int dim>
+    double
+    line_search(const MeritAlongStep<dim> &merit)
+    {
+      const double merit_before = merit(0.);
+      double       t            = 1;
+      while (t > 1. / 64 && merit(t) > (1 - 1e-4 * t) * merit_before)
+        t /= 2;
+      return t;
+    }
+
+    /**
+     * One linear problem of the method: moves du onto the node conditions
+     * (du = du_D + w) and solves for w in the subspace where they are
+     * homogeneous, until the residual is @p reduction times the initial one
+     * (not below @p floor); then du += w. Returns the linear iterations;
+     * throws SolverControl::NoConvergence.
      */
     template <int dim>
     unsigned int
-    solve_newton_system(const ContactStiffness<dim>        &A,
-                        const ProjectedPreconditioner<dim> &preconditioner,
-                        const bool                          non_symmetric,
-                        const unsigned int                  max_iterations,
-                        const double                        goal,
-                        const Vector                       &rhs,
-                        Vector                             &w)
+    solve_linearized(const IncrementalProblem<dim> &problem,
+                     const ActiveSets<dim>         &sets,
+                     const NodeProjection<dim>     &P,
+                     ShiftedStiffnessSolver        &linear_solver,
+                     const double                   mu_k,
+                     const double                   reduction,
+                     const double                   floor,
+                     TrilinosWrappers::MPI::Vector &du,
+                     TrilinosWrappers::MPI::Vector &K_du,
+                     TrilinosWrappers::MPI::Vector &rhs,
+                     TrilinosWrappers::MPI::Vector &w)
     {
-      SolverControl control(max_iterations, goal, false, false);
+      const TrilinosWrappers::SparseMatrix &K = problem.stiffness;
+      const bool any_slip = Utilities::MPI::logical_or(
+        impose_node_conditions(problem, sets.conditions, du) && mu_k > 0,
+        du.get_mpi_communicator());
+      const ContactStiffness<dim> A(K,
+                                    P,
+                                    problem.contact,
+                                    sets.conditions,
+                                    sets.slip_direction,
+                                    sets.robin,
+                                    any_slip ? mu_k : 0.);
+      K.vmult(K_du, du);
+      rhs = problem.load;
+      rhs -= K_du;
+      if (any_slip)
+        add_slip_terms(problem, A, sets, du, rhs);
+      P.apply(rhs);
+
       w = 0;
-      if (non_symmetric)
-        {
-          SolverGMRES<Vector> gmres(
-            control, typename SolverGMRES<Vector>::AdditionalData(50, true));
-          gmres.solve(A, w, rhs, preconditioner);
-        }
-      else
-        {
-          SolverCG<Vector> cg(control);
-          cg.solve(A, w, rhs, preconditioner);
-        }
-      return control.last_step();
+      const unsigned int iterations = solve_newton_system(
+        A, ProjectedPreconditioner<dim>(linear_solver, P), any_slip,
+        linear_solver.maximum_iterations(),
+        std::max(reduction * rhs.l2_norm(), floor), rhs, w);
+      du += w;
+      return iterations;
     }
-  } // namespace
+
+
+
+    /// The residuals at (du, r) with r projected onto the cones (into
+    /// @p admissible_r); @p T_r and @p scratch are work vectors.
+    template <int dim>
+    Residuals
+    admissible_residuals(const IncrementalProblem<dim>       &problem,
+                         const TrilinosWrappers::MPI::Vector &du,
+                         const TrilinosWrappers::MPI::Vector &K_du,
+                         const std::vector<Tensor<1, dim>>   &r,
+                         std::vector<Tensor<1, dim>>         &admissible_r,
+                         TrilinosWrappers::MPI::Vector       &T_r,
+                         TrilinosWrappers::MPI::Vector       &scratch)
+    {
+      for (unsigned int j = 0; j < r.size(); ++j)
+        admissible_r[j] = problem.contact.friction_cone().project(r[j]);
+      problem.contact.apply(admissible_r, T_r);
+      return compute_residuals(problem, du, K_du, T_r, admissible_r, scratch);
+    }
+
+
+
+    /**
+     * The stopping rule: force balance below tolerance |p|, penetration
+     * below tolerance L, complementarity below tolerance |p| L, with L the
+     * larger of the length scale and max |du|.
+     */
+    template <int dim>
+    bool
+    meets(const double                         tolerance,
+          const IncrementalProblem<dim>       &problem,
+          const TrilinosWrappers::MPI::Vector &du,
+          const Residuals                     &res)
+    {
+      const double load_norm = problem.load.l2_norm();
+      const double length = std::max(problem.length_scale, du.linfty_norm());
+      return res.force_balance <= tolerance * load_norm &&
+             res.penetration <= tolerance * length &&
+             res.complementarity <= tolerance * load_norm * length;
+    }
+
+    /// (du, r) = (1 - t) (previous_du, previous_r) + t (du, r).
+    template <int dim>
+    void
+    shorten_step(const double                         t,
+                 const TrilinosWrappers::MPI::Vector &previous_du,
+                 const std::vector<Tensor<1, dim>>   &previous_r,
+                 TrilinosWrappers::MPI::Vector       &du,
+                 std::vector<Tensor<1, dim>>         &r)
+    {
+      du.sadd(t, 1 - t, previous_du);
+      for (unsigned int j = 0; j < r.size(); ++j)
+        r[j] = (1 - t) * previous_r[j] + t * r[j];
+    }
+  } // namespace SemismoothNewton
 
 
 
@@ -420,6 +329,7 @@ namespace FrictionalContact
                                      std::vector<Tensor<1, dim>> &r,
                                      const bool record_history) const
   {
+    using namespace SemismoothNewton;
     const Timer                           timer;
     const ContactMap<dim>                &contact = problem.contact;
     const TrilinosWrappers::SparseMatrix &K       = problem.stiffness;
@@ -434,18 +344,13 @@ namespace FrictionalContact
     std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)
       initial_c_t[j] = tangential_factor * c[j];
-    ActiveSets<dim>                   sets(initial_c_t);
-    const std::vector<NodeCondition> &conditions     = sets.conditions;
-    const std::vector<Tensor<1, dim>> &slip_direction = sets.slip_direction;
-    const std::vector<double>         &robin          = sets.robin;
-    const std::vector<double>         &c_t            = sets.c_t;
+    ActiveSets<dim>                  sets(initial_c_t);
+    const std::vector<NodeCondition> &conditions = sets.conditions;
+    const std::vector<double>        &c_t        = sets.c_t;
 
     // From a cold start, the frictionless problem first: the normal sets
     // settle in a few steps, and friction then starts from real pressures.
-    double r_norm = 0;
-    for (unsigned int j = 0; j < n; ++j)
-      r_norm = std::max(r_norm, r[j].norm());
-    bool friction = mu > 0 && Utilities::MPI::max(r_norm, comm) > 0;
+    bool friction = mu > 0 && any_reaction(r, comm);
 
     const double load_norm = problem.load.l2_norm();
 
@@ -453,35 +358,22 @@ namespace FrictionalContact
     // The force balance residual K du - p - T r of the previous iterate.
     Vector                      previous_residual(du), residual(du);
     std::vector<Tensor<1, dim>> previous_r(n), admissible_r(n);
-    double                      mean_c = 0;
-    for (unsigned int j = 0; j < n; ++j)
-      mean_c += c[j];
-    mean_c = Utilities::MPI::sum(mean_c, comm) /
-             std::max<double>(1, contact.n_candidates());
+    const double mean_c = mean_normal_stiffness(contact, c, comm);
     K.vmult(K_du, du);
     contact.apply(r, T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);
-    bool                      first         = true;
-    double                    best_merit    = std::numeric_limits<double>::max();
-    double                    reduction     = linear_reduction;
-    unsigned int              last_progress = 0;
+    bool                      first     = true;
+    double                    reduction = linear_reduction;
+    ProgressMonitor           progress;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
         // Done when the residuals of the current iterate are small.
-        if (!first)
+        if (!first && meets(this->stop.tolerance, problem, du, result.residuals))
           {
-            const double length =
-              std::max(problem.length_scale, du.linfty_norm());
-            const Residuals &res = result.residuals;
-            if (res.force_balance <= this->stop.tolerance * load_norm &&
-                res.penetration <= this->stop.tolerance * length &&
-                res.complementarity <= this->stop.tolerance * load_norm * length)
-              {
-                result.converged = true;
-                break;
-              }
+            result.converged = true;
+            break;
           }
         first = false;
 
@@ -491,100 +383,43 @@ namespace FrictionalContact
           classify(problem, du, r, c, mu_k, sets), comm);
         if (!friction && mu > 0 && !changed && k > 0)
           {
-            friction      = true; // the normal sets have settled
-            first         = true;
-            best_merit    = std::numeric_limits<double>::max();
-            last_progress = k;
+            friction = true; // the normal sets have settled
+            first    = true;
+            progress.restart(k);
             --k;
             continue;
           }
 
         // The linear problem: du = du_D + w, with du_D meeting the node
         // conditions and w in the subspace where they are homogeneous.
-        previous_du   = du;
-        previous_r    = r;
+        previous_du       = du;
+        previous_r        = r;
         previous_residual = K_du;
         previous_residual -= problem.load;
         previous_residual -= T_r;
-        rhs           = problem.load;
-        bool any_slip = false;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            if (conditions[j] == NodeCondition::none)
-              continue;
-            const Tensor<1, dim> current = contact.local_part(j, du);
-            Tensor<1, dim>       target  = current;
-            target[0]                    = problem.gaps[j];
-            if (conditions[j] == NodeCondition::all_fixed)
-              for (unsigned int d = 1; d < dim; ++d)
-                target[d] = problem.obstacle_slip[j][d];
-            contact.add_reaction(j, target - current, du);
-            if (conditions[j] == NodeCondition::normal_fixed)
-              any_slip = true;
-          }
-        any_slip = Utilities::MPI::logical_or(any_slip && mu_k > 0, comm);
-        const ContactStiffness<dim> A(K,
-                                      P,
-                                      contact,
-                                      conditions,
-                                      slip_direction,
-                                      robin,
-                                      any_slip ? mu_k : 0.);
-        K.vmult(K_du, du);
-        rhs -= K_du;
-        if (any_slip)
-          {
-            A.couple(rhs);
-            // - B (du_D - the obstacle's slip)
-            A.add_robin(du, -1., rhs);
-            for (unsigned int j = 0; j < n; ++j)
-              if (conditions[j] == NodeCondition::normal_fixed)
-                {
-                  Tensor<1, dim> slip = problem.obstacle_slip[j];
-                  slip -= (slip * slip_direction[j]) * slip_direction[j];
-                  if (dim == 3)
-                    contact.add_reaction(j, robin[j] * slip, rhs);
-                }
-          }
-        P.apply(rhs);
-
-        w                    = 0;
-        const double initial = rhs.l2_norm();
-        const double goal =
-          std::max(reduction * initial, 0.1 * this->stop.tolerance * load_norm);
         unsigned int linear_iterations = 0;
         try
           {
-            linear_iterations = solve_newton_system(
-              A, ProjectedPreconditioner<dim>(linear_solver, P), any_slip,
-              linear_solver.maximum_iterations(), goal, rhs, w);
+            linear_iterations =
+              solve_linearized(problem, sets, P, linear_solver, mu_k,
+                               reduction, 0.1 * this->stop.tolerance * load_norm,
+                               du, K_du, rhs, w);
           }
         catch (const SolverControl::NoConvergence &e)
           {
             result.failure =
               "the linear solve of Newton iteration " + std::to_string(k + 1) +
               " did not converge (residual " + Input::scientific(e.last_residual) +
-              " after " + std::to_string(e.last_step) + " iterations, goal " +
-              Input::scientific(goal) +
-              "); raise <Linear solver/Maximum iterations>";
+              " after " + std::to_string(e.last_step) +
+              " iterations); raise <Linear solver/Maximum iterations>";
             break;
           }
         result.linear_iterations += linear_iterations;
-        du += w;
 
-        // Reactions: the residual K du - p at the active nodes. (They may
-        // leave the cones on the way; the residuals below judge their
-        // projection onto the cones.)
         K.vmult(K_du, du);
         scratch = K_du;
         scratch -= problem.load;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            r[j] = Tensor<1, dim>();
-            if (conditions[j] == NodeCondition::none)
-              continue;
-            r[j] = contact.local_part(j, scratch);
-          }
+        active_reactions(contact, conditions, scratch, r);
 
         // Line search along the segment from the previous iterate, on the
         // complementarity functions and the force balance: a full step can
@@ -597,26 +432,16 @@ namespace FrictionalContact
         const MeritAlongStep<dim> merit(problem, c, c_t, mu_k, mean_c,
                                         previous_du, du, previous_r, r,
                                         previous_residual, residual, scratch);
-        const double merit_before = merit(0.);
-        double       t            = 1;
-        while (t > 1. / 64 && merit(t) > (1 - 1e-4 * t) * merit_before)
-          t /= 2;
+        const double t = line_search(merit);
         // A damped step says the direction was poor: solve the next one
         // more accurately; full steps relax the accuracy again.
         reduction = t < 1 ? std::max(0.1 * reduction, 1e-8) :
                             std::min(10 * reduction, linear_reduction);
 
-        // No progress: the merit has not dropped by a tenth in 25 steps.
-        const double merit_after = merit(t);
-        if (merit_after < 0.9 * best_merit)
-          {
-            best_merit    = merit_after;
-            last_progress = k;
-          }
-        if (k > last_progress + 25)
+        if (progress.stalled(k, merit(t)))
           {
             result.failure = "no progress from Newton iteration " +
-                             std::to_string(last_progress + 1) + " to " +
+                             std::to_string(progress.last_progress + 1) + " to " +
                              std::to_string(k + 1) +
                              " (the stick/slip sets keep changing); try "
                              "smaller increments, Loading/On failure = cut "
@@ -625,9 +450,7 @@ namespace FrictionalContact
           }
         if (t < 1)
           {
-            du.sadd(t, 1 - t, previous_du);
-            for (unsigned int j = 0; j < n; ++j)
-              r[j] = (1 - t) * previous_r[j] + t * r[j];
+            shorten_step(t, previous_du, previous_r, du, r);
             K.vmult(K_du, du);
           }
         contact.apply(r, T_r);
@@ -635,11 +458,8 @@ namespace FrictionalContact
         previous_du -= du;
         result.iterations = k + 1;
         result.last_step  = previous_du.l2_norm();
-        for (unsigned int j = 0; j < n; ++j)
-          admissible_r[j] = contact.friction_cone().project(r[j]);
-        contact.apply(admissible_r, scratch);
         result.residuals =
-          compute_residuals(problem, du, K_du, scratch, admissible_r, w);
+          admissible_residuals(problem, du, K_du, r, admissible_r, scratch, w);
         const HistoryRow row{k + 1,
                              timer.wall_time(),
                              result.residuals,
@@ -657,7 +477,8 @@ namespace FrictionalContact
       }
     r = admissible_r;
     if (!result.converged && result.failure.empty())
-      result.failure = "no convergence in " + std::to_string(this->stop.max_iterations) +
+      result.failure = "no convergence in " +
+                       std::to_string(this->stop.max_iterations) +
                        " Newton iterations; raise <Contact solver/Semismooth "
                        "Newton/Maximum iterations> or use smaller increments";
     result.amg_setups = linear_solver.n_amg_setups - setups;

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -165,12 +167,25 @@ namespace FrictionalContact
                    const AffineConstraints<double> &distribute,
                    Vector                          &force) const;
 
+    /// What assembling one cell needs: the (face) values of Q1 at the
+    /// 2 x 2 (x 2) Gauss points, the cell matrix and load, the dof indices.
+    struct CellScratch
+    {
+      explicit CellScratch(const FiniteElement<dim> &fe);
+
+      QGauss<dim>                          quadrature;
+      QGauss<dim - 1>                      face_quadrature;
+      FEValues<dim>                        fe_values;
+      FEFaceValues<dim>                    fe_face_values;
+      FullMatrix<double>                   cell_matrix;
+      dealii::Vector<double>               cell_load;
+      std::vector<types::global_dof_index> dof_indices;
+    };
+
+    /// The cell matrix and load of @p cell, into @p scratch.
     void
     assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                  FEValues<dim>          &fe_values,
-                  FEFaceValues<dim>      &fe_face_values,
-                  FullMatrix<double>     &cell_matrix,
-                  dealii::Vector<double> &cell_load) const;
+                  CellScratch &scratch) const;
 
     const LinearElasticMaterial<dim> &material;
     const BoundaryConditions<dim>    &conditions;

@@ -1,0 +1,366 @@
+#pragma once
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <frictional_contact/solvers/contact_problem.h>
+#include <frictional_contact/solvers/shifted_stiffness_solver.h>
+
+#include <limits>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The building blocks of SemismoothNewtonSolver: the node conditions of
+   * one Newton iteration and how the candidates are sorted into them, the
+   * linear operator with the conditions imposed by projection, the merit of
+   * the line search, and the Krylov solve of the linear problem.
+   */
+  namespace SemismoothNewton
+  {
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /// What the linear problem of a Newton iteration prescribes at a node.
+    enum class NodeCondition : unsigned char
+    {
+      none,         // free: no force
+      normal_fixed, // slip: normal displacement fixed, friction force given
+      all_fixed     // stick: normal and tangential displacement fixed
+    };
+
+    /**
+     * The orthogonal projection onto displacements that leave the fixed
+     * directions of the node conditions alone: removes the normal part at
+     * slipping nodes and the whole nodal vector at sticking ones.
+     */
+    template <int dim>
+    class NodeProjection
+    {
+    public:
+      NodeProjection(const ContactMap<dim>             &contact,
+                     const std::vector<NodeCondition> &conditions)
+        : contact(contact)
+        , conditions(conditions)
+      {}
+
+      void
+      apply(Vector &v) const
+      {
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          if (conditions[j] != NodeCondition::none)
+            {
+              Tensor<1, dim> fixed_part = contact.local_part(j, v);
+              if (conditions[j] == NodeCondition::normal_fixed)
+                for (unsigned int d = 1; d < dim; ++d)
+                  fixed_part[d] = 0;
+              contact.add_reaction(j, -fixed_part, v);
+            }
+      }
+
+    private:
+      const ContactMap<dim>             &contact;
+      const std::vector<NodeCondition> &conditions;
+    };
+
+    /**
+     * The Newton operator on the subspace of the node conditions:
+     * w -> P ((I + C) K w + B w). C couples the friction force of a
+     * slipping node to its normal reaction, so that its tangential equation
+     * reads T_t^T R + mu n (t_n^T R) + kappa Q T_t^T du = 0 with R = K du - p:
+     * r_t = -mu r_n n - kappa Q u_t, the linearisation of
+     * r_t = mu |r_n| zeta / |zeta| (Q = I - n n^T, the tangential directions
+     * across the slip; B is this Robin term, zero in 2D). Without slipping
+     * nodes the operator is P K P, symmetric.
+     */
+    template <int dim>
+    class ContactStiffness
+    {
+    public:
+      ContactStiffness(const TrilinosWrappers::SparseMatrix &K,
+                       const NodeProjection<dim>            &P,
+                       const ContactMap<dim>                 &contact,
+                       const std::vector<NodeCondition>     &conditions,
+                       const std::vector<Tensor<1, dim>>    &slip_direction,
+                       const std::vector<double>            &robin,
+                       const double                          mu)
+        : K(K)
+        , P(P)
+        , contact(contact)
+        , conditions(conditions)
+        , slip_direction(slip_direction)
+        , robin(robin)
+        , mu(mu)
+      {}
+
+      void
+      vmult(Vector &dst, const Vector &src) const
+      {
+        K.vmult(dst, src);
+        couple(dst);
+        add_robin(src, 1., dst);
+        P.apply(dst);
+      }
+
+      /// v += C v: the friction force that goes with the normal reaction.
+      void
+      couple(Vector &v) const
+      {
+        if (mu == 0)
+          return;
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          if (conditions[j] == NodeCondition::normal_fixed)
+            {
+              const double r_n = contact.local_part(j, v)[0];
+              contact.add_reaction(j, mu * r_n * slip_direction[j], v);
+            }
+      }
+
+      /// dst += factor B u.
+      void
+      add_robin(const Vector &u, const double factor, Vector &dst) const
+      {
+        if (mu == 0 || dim == 2)
+          return;
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          if (conditions[j] == NodeCondition::normal_fixed && robin[j] > 0)
+            {
+              Tensor<1, dim> u_t = contact.local_part(j, u);
+              u_t[0]             = 0;
+              u_t -= (u_t * slip_direction[j]) * slip_direction[j];
+              contact.add_reaction(j, factor * robin[j] * u_t, dst);
+            }
+      }
+
+    private:
+      const TrilinosWrappers::SparseMatrix &K;
+      const NodeProjection<dim>            &P;
+      const ContactMap<dim>                 &contact;
+      const std::vector<NodeCondition>     &conditions;
+      const std::vector<Tensor<1, dim>>    &slip_direction;
+      const std::vector<double>            &robin;
+      const double                          mu;
+    };
+
+    /// The node conditions of an active-set step and what goes with them.
+    template <int dim>
+    struct ActiveSets
+    {
+      explicit ActiveSets(const std::vector<double> &c_t)
+        : conditions(c_t.size(), NodeCondition::none)
+        , bound(c_t.size(), 0.)
+        , slip_direction(c_t.size())
+        , robin(c_t.size(), 0.)
+        , c_t(c_t)
+        , flips(c_t.size(), 0)
+      {}
+
+      std::vector<NodeCondition>  conditions;
+      /// mu max(sigma_j, 0): the friction bound of each node.
+      std::vector<double>         bound;
+      std::vector<Tensor<1, dim>> slip_direction;
+      /// kappa_j of the Robin term across the slip (3D).
+      std::vector<double>         robin;
+      /// c_t per node, and how often its stick/slip state went back and
+      /// forth.
+      std::vector<double>       c_t;
+      std::vector<unsigned int> flips;
+    };
+
+    /**
+     * Sorts the nodes by the augmented reactions of (du, r): free where the
+     * augmented normal reaction sigma_j is not positive, stick inside the
+     * friction bound, slip on it. Returns whether a node of this rank
+     * changed its condition.
+     */
+    template <int dim>
+    bool
+    classify(const IncrementalProblem<dim>     &problem,
+             const Vector                      &du,
+             const std::vector<Tensor<1, dim>> &r,
+             const std::vector<double>         &c,
+             const double                       mu_k,
+             ActiveSets<dim>                   &sets)
+    {
+      const unsigned int n       = c.size();
+      bool               changed = false;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
+        const double sigma = -r[j][0] - c[j] * (problem.gaps[j] - u_j[0]);
+        Tensor<1, dim> zeta = r[j] - sets.c_t[j] * u_j;
+        zeta[0]             = 0;
+        const double zeta_norm = zeta.norm();
+        const NodeCondition before = sets.conditions[j];
+        const Tensor<1, dim> direction_before = sets.slip_direction[j];
+        sets.bound[j] = mu_k * std::max(sigma, 0.);
+        if (!(sigma > 0))
+          sets.conditions[j] = NodeCondition::none;
+        else if (mu_k > 0 && zeta_norm < sets.bound[j])
+          sets.conditions[j] = NodeCondition::all_fixed;
+        else
+          {
+            sets.conditions[j] = NodeCondition::normal_fixed;
+            sets.slip_direction[j] =
+              zeta_norm > 0 ? zeta / zeta_norm : Tensor<1, dim>();
+            // kappa = s c_t / (|zeta| - s), bounded where |zeta| ~ s.
+            sets.robin[j] = zeta_norm > sets.bound[j] ?
+                         std::min(sets.bound[j] * sets.c_t[j] / (zeta_norm - sets.bound[j]),
+                                  1e3 * c[j]) :
+                         0.;
+          }
+        changed = changed || sets.conditions[j] != before;
+        // Anti-cycling: stick <-> slip, or a reversed slip direction.
+        const bool flipped =
+          before != NodeCondition::none &&
+          sets.conditions[j] != NodeCondition::none &&
+          (sets.conditions[j] != before ||
+           (before == NodeCondition::normal_fixed &&
+            sets.slip_direction[j] * direction_before < 0));
+        if (mu_k > 0 && flipped && ++sets.flips[j] >= 2)
+          {
+            sets.c_t[j] *= 0.1;
+            sets.flips[j] = 0;
+          }
+      }
+      return changed;
+    }
+
+
+
+    /**
+     * The merit of the line search at the point t of the segment from the
+     * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
+     * complementarity functions of all nodes, scaled by c_j, plus the
+     * squared force balance residual (linear along the segment), scaled by
+     * the mean c. Collective.
+     */
+    template <int dim>
+    class MeritAlongStep
+    {
+    public:
+      MeritAlongStep(const IncrementalProblem<dim>     &problem,
+                     const std::vector<double>         &c,
+                     const std::vector<double>         &c_t,
+                     const double                       mu_k,
+                     const double                       mean_c,
+                     const Vector                      &du_0,
+                     const Vector                      &du_1,
+                     const std::vector<Tensor<1, dim>> &r_0,
+                     const std::vector<Tensor<1, dim>> &r_1,
+                     const Vector                      &balance_0,
+                     const Vector                      &balance_1,
+                     Vector                            &scratch)
+        : problem(problem)
+        , c(c)
+        , c_t(c_t)
+        , mu_k(mu_k)
+        , mean_c(mean_c)
+        , du_0(du_0)
+        , du_1(du_1)
+        , r_0(r_0)
+        , r_1(r_1)
+      {
+        balance_a = balance_0.norm_sqr();
+        balance_b = balance_0 * balance_1 - balance_a;
+        scratch   = balance_1;
+        scratch -= balance_0;
+        balance_c = scratch.norm_sqr();
+      }
+
+      double
+      operator()(const double t) const
+      {
+        double sum = 0;
+        for (unsigned int j = 0; j < c.size(); ++j)
+          {
+            const Tensor<1, dim> u_j =
+              (1 - t) * problem.relative_displacement(j, du_0) +
+              t * problem.relative_displacement(j, du_1);
+            const Tensor<1, dim> r_j   = (1 - t) * r_0[j] + t * r_1[j];
+            const double         gap   = problem.gaps[j] - u_j[0];
+            const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
+            const double bound_j = mu_k * std::max(0., -(r_j[0] + c[j] * gap));
+            Tensor<1, dim> z     = r_j - c_t[j] * u_j;
+            z[0]                 = 0;
+            if (z.norm() > bound_j)
+              z *= bound_j / z.norm();
+            Tensor<1, dim> phi_t = r_j - z;
+            phi_t[0]             = 0;
+            sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
+          }
+        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
+               (balance_a + 2 * t * balance_b + t * t * balance_c) / mean_c;
+      }
+
+    private:
+      const IncrementalProblem<dim>     &problem;
+      const std::vector<double>         &c;
+      const std::vector<double>         &c_t;
+      const double                       mu_k;
+      const double                       mean_c;
+      const Vector                      &du_0;
+      const Vector                      &du_1;
+      const std::vector<Tensor<1, dim>> &r_0;
+      const std::vector<Tensor<1, dim>> &r_1;
+      double                             balance_a, balance_b, balance_c;
+    };
+
+
+
+    /// P M P with M the preconditioner of K (the AMG, unless <Linear
+    /// solver/Preconditioner> asks for Jacobi).
+    template <int dim>
+    class ProjectedPreconditioner
+    {
+    public:
+      ProjectedPreconditioner(const ShiftedStiffnessSolver &stiffness_solver,
+                              const NodeProjection<dim>    &P)
+        : stiffness_solver(stiffness_solver)
+        , P(P)
+      {}
+
+      void
+      vmult(Vector &dst, const Vector &src) const
+      {
+        stiffness_solver.precondition_stiffness(dst, src);
+        P.apply(dst);
+      }
+
+    private:
+      const ShiftedStiffnessSolver &stiffness_solver;
+      const NodeProjection<dim>    &P;
+    };
+    /**
+     * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
+     * a slipping node makes A non-symmetric, else CG. Returns the Krylov
+     * iterations; throws SolverControl::NoConvergence.
+     */
+    template <int dim>
+    unsigned int
+    solve_newton_system(const ContactStiffness<dim>        &A,
+                        const ProjectedPreconditioner<dim> &preconditioner,
+                        const bool                          non_symmetric,
+                        const unsigned int                  max_iterations,
+                        const double                        goal,
+                        const Vector                       &rhs,
+                        Vector                             &w)
+    {
+      SolverControl control(max_iterations, goal, false, false);
+      w = 0;
+      if (non_symmetric)
+        {
+          SolverGMRES<Vector> gmres(
+            control, typename SolverGMRES<Vector>::AdditionalData(50, true));
+          gmres.solve(A, w, rhs, preconditioner);
+        }
+      else
+        {
+          SolverCG<Vector> cg(control);
+          cg.solve(A, w, rhs, preconditioner);
+        }
+      return control.last_step();
+    }
+  } // namespace SemismoothNewton
+} // namespace FrictionalContact
