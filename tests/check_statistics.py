@@ -5,9 +5,11 @@ usage: check_statistics.py statistics --rows FIRST-LAST
            --ratio "numerator column" "denominator column" VALUE [--tolerance 1e-6]
        check_statistics.py statistics --rows FIRST-LAST
            --same-as OTHER_STATISTICS "column" [--tolerance 0.1]
+       check_statistics.py statistics --rows FIRST-LAST --at-most "column" VALUE
 Passes if numerator / denominator = VALUE within the relative tolerance on
 every row of the range (rows counted from 1, as the increments); or if the
-column equals that of the other file within the relative tolerance.
+column equals that of the other file within the relative tolerance; or if
+the column is at most VALUE on every row of the range.
 """
 import argparse
 import re
@@ -35,6 +37,7 @@ def main():
                         metavar=("NUMERATOR", "DENOMINATOR", "LOW", "HIGH"),
                         help="numerator / denominator in [LOW, HIGH)")
     parser.add_argument("--same-as", nargs=2)
+    parser.add_argument("--at-most", nargs=2, metavar=("COLUMN", "VALUE"))
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
 
@@ -52,6 +55,17 @@ def main():
             print(f"increment {row[0]}: {column} {a:g} against {b:g} "
                   f"(relative difference {error:.1e}, {'ok' if passed else 'ABOVE'} "
                   f"{args.tolerance:g})")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
+    if args.at_most:
+        column, limit = args.at_most[0], float(args.at_most[1])
+        ok = len(rows) >= last
+        for row in rows[first - 1:last]:
+            value = float(row[columns[column]])
+            passed = value <= limit
+            ok = ok and passed
+            print(f"increment {row[0]}: {column} {value:.3e} "
+                  f"({'at most' if passed else 'ABOVE'} {limit:g})")
         print("PASSED" if ok else "FAILED")
         return 0 if ok else 1
     if args.ratio_between:

@@ -197,3 +197,15 @@ add_test(NAME cut_increment.policy
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_cut_increment.py
           ${CMAKE_CURRENT_BINARY_DIR}/cut_increment/output 1 5)
 set_tests_properties(cut_increment.policy PROPERTIES FIXTURES_REQUIRED cut_increment)
+
+# Pressed past the locally refined region (issue 17): no vertex of the
+# contact boundary, hanging nodes included, goes through the plane. The
+# bound is 1e-10 times the pressing depth (0.04), the Newton tolerance.
+foreach(_dim 2d 3d)
+  set(_name pressed_past_refinement_${_dim})
+  add_test(NAME ${_name}.no_penetration
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_name}/output-${_name}/statistics
+      --rows 1-1 --at-most "Max boundary penetration" 4e-12)
+  set_tests_properties(${_name}.no_penetration PROPERTIES FIXTURES_REQUIRED ${_name})
+endforeach()

@@ -169,8 +169,16 @@ namespace FrictionalContact
       state.contact_forces[j] = contact.to_cartesian(j, outcome.reactions[j]);
     state.u += outcome.du;
 
-    const ContactSummary<dim> summary = summarize(
+    ContactSummary<dim> summary = summarize(
       contact, outcome.results, state.contact_forces, mpi_communicator);
+    if (contact.active())
+      {
+        TrilinosWrappers::MPI::Vector u_ghosted =
+          model.get_body().make_ghosted_vector();
+        u_ghosted = state.u;
+        summary.deepest_penetration =
+          contact.deepest_boundary_penetration(model.get_body(), u_ghosted);
+      }
     const unsigned int n = driver.times().size();
     const Postprocess::IncrementResult<dim> result{
       l + 1, n, t, load_factor, model, state, outcome, summary};

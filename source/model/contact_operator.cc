@@ -236,6 +236,31 @@ namespace FrictionalContact
 
 
   template <int dim>
+  double
+  ContactOperator<dim>::deepest_boundary_penetration(
+    const ElasticBody<dim> &body,
+    const Vector           &u_ghosted) const
+  {
+    double deepest = 0;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              contact_boundaries.count(face->boundary_id()) > 0)
+            for (const unsigned int v : face->vertex_indices())
+              {
+                Point<dim> deformed = face->vertex(v);
+                for (unsigned int c = 0; c < dim; ++c)
+                  deformed[c] += u_ghosted[face->vertex_dof_index(v, c)];
+                deepest = std::max(
+                  deepest, -obstacle->signed_distance(deformed - obstacle_shift));
+              }
+    return Utilities::MPI::max(deepest, mpi_communicator);
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   ContactOperator<dim>::to_local(const unsigned int j, Tensor<1, dim> v) const
   {

@@ -3,8 +3,10 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/mesh_refinement.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <vector>
 
 namespace FrictionalContact
 {
@@ -146,6 +148,43 @@ namespace FrictionalContact
       }
     check_memory(mesh.n_global_active_cells(), comm);
   }
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::conform_hanging_vertices(
+    parallel::distributed::Triangulation<dim> &mesh)
+  {
+    // Coarser cells first: a vertex a hanging vertex is averaged from may
+    // itself hang from a coarser cell.
+    std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (!cell->is_artificial())
+        cells.push_back(cell);
+    std::stable_sort(cells.begin(), cells.end(), [](const auto &a, const auto &b) {
+      return a->level() < b->level();
+    });
+
+    for (const auto &cell : cells)
+      {
+        // The midpoint of a refined edge of an active cell hangs (in 2D the
+        // edges are the faces).
+        for (unsigned int l = 0; l < cell->n_lines(); ++l)
+          if (const auto line = cell->line(l); line->has_children())
+            line->child(0)->vertex(1) = 0.5 * (line->vertex(0) + line->vertex(1));
+        // In 3D, so does the centre of a refined face.
+        if (dim == 3)
+          for (const auto &face : cell->face_iterators())
+            if (face->has_children())
+              {
+                Point<dim> centre;
+                for (const unsigned int v : face->vertex_indices())
+                  centre += 0.25 * face->vertex(v);
+                face->child(0)->vertex(3) = centre;
+              }
+      }
+  }
+
+
 
   template class MeshRefinement<2>;
   template class MeshRefinement<3>;

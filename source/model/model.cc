@@ -77,6 +77,7 @@ namespace FrictionalContact
       load_mesh(triangulation);
     else
       refinement->refine(triangulation, geometry->n_built_in_refinements());
+    MeshRefinement<dim>::conform_hanging_vertices(triangulation);
 
     body->setup();
     // Every rank must own unknowns: the solvers' collective steps

@@ -26,6 +26,8 @@ namespace FrictionalContact
         columns.push_back({"Contact area", s.contact_area, true});
         columns.push_back({"Stick area", s.stick_area, true});
         columns.push_back({"Max contact pressure", s.max_pressure, true});
+        columns.push_back(
+          {"Max boundary penetration", s.deepest_penetration, true});
         return columns;
       }
     };
@@ -36,6 +38,8 @@ namespace FrictionalContact
       "contact statistics",
       "Statistics columns of the contact: free, stick and slip nodes, the "
       "total contact force and its normal and tangential parts, the contact "
-      "and stick areas and the largest contact pressure.")
+      "and stick areas, the largest contact pressure, and the deepest "
+      "penetration of any vertex of the contact boundaries (candidate or "
+      "not) into the obstacle.")
   } // namespace Postprocess
 } // namespace FrictionalContact

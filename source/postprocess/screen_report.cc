@@ -30,6 +30,18 @@ namespace FrictionalContact
         return out.str();
       }
 
+      /// The deepest penetration the solver allows a candidate: the
+      /// penetration residual (a Euclidean norm over the candidates, so at
+      /// least the deepest one) plus 1e-10 times the increment's length.
+      template <int dim>
+      double
+      allowed_penetration(const IncrementResult<dim> &result)
+      {
+        const auto &problem = result.outcome.problem;
+        return result.outcome.statistics.residuals.penetration +
+               (problem ? 1e-10 * problem->length_scale : 0.);
+      }
+
       std::string
       residual_text(const Residuals &res)
       {
@@ -68,6 +80,15 @@ namespace FrictionalContact
       else
         out << ": elastic solve, " << solve.linear_iterations
             << " CG iterations (" << last_preconditioner << ")" << std::endl;
+      // The candidates' penetration is bounded by the residual; a vertex
+      // that is not a candidate must not go deeper.
+      if (contact && summary.deepest_penetration > allowed_penetration(result))
+        out << "Warning: a vertex of the contact boundary is "
+            << Input::scientific(summary.deepest_penetration)
+            << " inside the obstacle, deeper than the solver allows any "
+               "contact candidate (penetration residual "
+            << Input::scientific(solve.residuals.penetration) << ")"
+            << std::endl;
       out << "-- increment " << result.increment << " solve wall time "
           << solve.seconds << " s" << std::endl;
     }
@@ -109,6 +130,9 @@ namespace FrictionalContact
           << std::endl
           << "    max |u| = " << Input::to_text(result.state.u.linfty_norm())
           << std::endl;
+      if (model.get_contact().active())
+        out << "    contact boundary: deepest penetration of any vertex "
+            << Input::scientific(summary.deepest_penetration) << std::endl;
     }
 
     template void

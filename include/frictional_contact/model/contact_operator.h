@@ -72,6 +72,16 @@ namespace FrictionalContact
     void
     move_obstacle(const Tensor<1, dim> &displacement);
 
+    /**
+     * The deepest penetration into the obstacle (at its current position)
+     * of any vertex on a contact boundary, candidate or not (hanging nodes,
+     * fixed nodes), for the displacement @p u_ghosted (with ghost entries);
+     * 0 if none penetrates. Collective.
+     */
+    double
+    deepest_boundary_penetration(const ElasticBody<dim> &body,
+                                 const Vector           &u_ghosted) const;
+
     /// Signed distance from the reference position of j to the obstacle.
     double
     reference_gap(const unsigned int j) const

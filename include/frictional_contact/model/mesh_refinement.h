@@ -32,6 +32,19 @@ namespace FrictionalContact
     refine(parallel::distributed::Triangulation<dim> &mesh,
            const unsigned int                         built_in_refinements) const;
 
+    /**
+     * Moves every hanging vertex to the mean of the vertices it hangs from
+     * (the midpoint of its coarse edge, the centre of its coarse face), where
+     * its Q1 displacement is the mean of theirs. Refinement puts such a
+     * vertex on a curved manifold instead, away from the coarse neighbour's
+     * face: the mesh then has a crack there, and the vertex can sink into a
+     * plane obstacle while the candidates it hangs from do not. After the
+     * move its gap to a plane is the mean of theirs. Call after every
+     * change of the mesh (refinement, loading a checkpoint).
+     */
+    static void
+    conform_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh);
+
   private:
     /// Throws an InputError if a mesh of @p n_cells cells would not fit in
     /// the memory of this machine.

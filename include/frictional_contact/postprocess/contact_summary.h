@@ -24,6 +24,9 @@ namespace FrictionalContact
     double contact_area = 0;
     double stick_area   = 0;
     double max_pressure = 0;
+    /// The deepest penetration of any contact-boundary vertex (candidates,
+    /// hanging nodes, fixed nodes) into the obstacle.
+    double deepest_penetration = 0;
 
     unsigned int
     count(const ContactState state) const
