@@ -14,10 +14,9 @@ import os
 import sys
 from collections import defaultdict
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+# matplotlib is imported after the arguments are parsed (pyplot()), so
+# that --help works where it is missing.
+plt = None
 
 LABELS = {"primal-dual": "Algorithm 2 (accelerated primal-dual)",
           "newton": "semismooth Newton"}
@@ -60,11 +59,22 @@ def finish(axis, ylabel, title, file_name,
     axis.figure.savefig(file_name, dpi=110)
 
 
+def pyplot():
+    """matplotlib's pyplot with a file backend, as the module's plt."""
+    global plt
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot
+    plt = matplotlib.pyplot
+    return plt
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--csv", default="doc/benchmarks/series.csv")
     parser.add_argument("--out", default="doc/benchmarks")
     args = parser.parse_args()
+    pyplot()
     with open(args.csv) as f:
         rows = list(csv.DictReader(f))
 

@@ -111,14 +111,14 @@ def parse(output):
     values["d"] = int(match.group(1)) if match else ""
     match = re.search(r"c = (\d+) candidates", output)
     values["c"] = int(match.group(1)) if match else 0
-    match = re.search(r"Increment 1/1, t = 1: (\d+) \S+ iterations, (\d+) CG "
+    match = re.search(r"Increment 1/1, t = 1: (\d+) \S+ iterations, (\d+) Krylov "
                       r"iterations, (\d+) AMG set-ups; residuals (\S+) (\S+) (\S+);"
-                      r" free/slip/stick (\d+)/(\d+)/(\d+)", output)
+                      r" free/stick/slip (\d+)/(\d+)/(\d+)", output)
     if match:
         (values["iterations"], values["cg_iterations"], values["amg_setups"],
          values["force_balance"], values["complementarity"],
          values["penetration"]) = match.groups()[:6]
-        free, slip, stick = (int(x) for x in match.groups()[6:])
+        free, stick, slip = (int(x) for x in match.groups()[6:])
         total = max(free + slip + stick, 1)
         values.update(free_percent=100 * free / total, slip_percent=100 * slip / total,
                       stick_percent=100 * stick / total)

@@ -11,10 +11,9 @@ import argparse
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+# matplotlib is imported after the arguments are parsed (pyplot()), so
+# that --help works where it is missing.
+plt = None
 
 PANELS = [
     ("force_balance", "force balance |K du - p - T r|"),
@@ -49,6 +48,16 @@ def label_and_path(item):
     raise SystemExit(f"{item}: no such history file")
 
 
+def pyplot():
+    """matplotlib's pyplot with a file backend, as the module's plt."""
+    global plt
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot
+    plt = matplotlib.pyplot
+    return plt
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -57,6 +66,7 @@ def main():
     parser.add_argument("--x", choices=["time", "iteration"], default="time")
     parser.add_argument("--title", default=None)
     args = parser.parse_args()
+    pyplot()
 
     figure, axes = plt.subplots(2, 2, figsize=(10, 7.5))
     for item in args.histories:

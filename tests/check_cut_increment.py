@@ -22,6 +22,9 @@ BALANCE = re.compile(r"force balance: load \(([^)]*)\) \+ contact \(([^)]*)\) \+
 
 
 def main():
+    if "--help" in sys.argv or "-h" in sys.argv:
+        print(__doc__)
+        return 0
     if len(sys.argv) != 4:
         print(__doc__)
         return 2

@@ -29,6 +29,9 @@ def same(value, default):
 
 
 def main():
+    if len(sys.argv) != 3 or sys.argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(sys.argv) == 2 else 2
     contact, scene = sys.argv[1], sys.argv[2]
     listing = subprocess.run([contact, "--print-parameters", "--json", scene],
                              capture_output=True, text=True, check=True).stdout

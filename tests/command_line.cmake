@@ -11,3 +11,8 @@ set_tests_properties(command_line/print_parameters_of_scene PROPERTIES
 add_test(NAME command_line/help COMMAND $<TARGET_FILE:contact> --help)
 set_tests_properties(command_line/help PROPERTIES
   PASS_REGULAR_EXPRESSION "Usage: contact \\[options\\] <parameter file>")
+
+# Every Python script answers --help without its heavy imports.
+add_test(NAME command_line/script_help
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_script_help.py
+          ${PROJECT_SOURCE_DIR})

@@ -6,7 +6,7 @@ count (this replaces a digit-by-digit numdiff).
 Both files must have the same lines with the same words; the numbers on
 them are compared by kind, told apart by the words around them:
 
-  Krylov iterations, AMG set-ups   ("241 CG iterations", "1 AMG set-ups"):
+  Krylov iterations, AMG set-ups   ("241 Krylov iterations", "1 AMG set-ups"):
       not compared (they move with the BLAS and the rank count); they must
       be whole numbers >= 0.
   contact-solver iterations       ("10 Newton iterations",
@@ -18,7 +18,7 @@ them are compared by kind, told apart by the words around them:
       output, or the solver tolerance where that is larger. Whether each solve
       met its tolerance is the program's own verdict: a solve that did
       not exits non-zero, and run_test.sh fails on that.
-  free/slip/stick counts          ("46/0/27", "(46 / 7 / 20 of 73)") and
+  free/stick/slip counts          ("46/27/0", "(46 / 20 / 7 of 73)") and
       their percentages: within max(1, 1 % of the candidates) nodes, since
       a node on the stick/slip edge may fall either way.
   everything else (forces, displacements, eigenvalues, sizes, times):
@@ -84,7 +84,7 @@ def classify(line):
     numbers = []
     residual_index = None
     candidates = None
-    counts = re.search(r"free/slip/stick\s+(\d+)/(\d+)/(\d+)", line)
+    counts = re.search(r"free/stick/slip\s+(\d+)/(\d+)/(\d+)", line)
     if counts:
         candidates = sum(int(g) for g in counts.groups())
     of = re.search(r"\(\s*\d+ / \d+ / \d+ of (\d+)\)", line)
@@ -106,7 +106,7 @@ def classify(line):
         elif re.search(r"\)\s*=\s*$", before) and "force balance" in line:
             numbers.append(Number(text, "residual", "force sum"))
         elif candidates is not None and (
-                re.search(r"free/slip/stick\s+(\d+/){0,2}$", prefix) or
+                re.search(r"free/stick/slip\s+(\d+/){0,2}$", prefix) or
                 re.search(r"\((\s*\d+ /){0,2}\s*$", prefix)):
             numbers.append(Number(text, "count", candidates=candidates))
         elif candidates is not None and after.startswith("%"):
@@ -190,6 +190,9 @@ def compare(output_lines, expected_lines):
 
 
 def main():
+    if "--help" in sys.argv or "-h" in sys.argv:
+        print(__doc__)
+        return 0
     if len(sys.argv) != 3:
         print(__doc__)
         return 2

@@ -209,3 +209,16 @@ foreach(_dim 2d 3d)
       --rows 1-1 --at-most "Max boundary penetration" 4e-12)
   set_tests_properties(${_name}.no_penetration PROPERTIES FIXTURES_REQUIRED ${_name})
 endforeach()
+
+# Output files: a single increment still gets its time series (solution.pvd);
+# Write vtu = false leaves no solution/ folder behind.
+add_test(NAME one_increment.pvd
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_files.py
+    --exists ${CMAKE_CURRENT_BINARY_DIR}/one_increment/output-one_increment/solution.pvd)
+set_tests_properties(one_increment.pvd PROPERTIES FIXTURES_REQUIRED one_increment)
+add_test(NAME pressed_past_refinement_2d.no_vtu_folder
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_files.py
+    --exists ${CMAKE_CURRENT_BINARY_DIR}/pressed_past_refinement_2d/output-pressed_past_refinement_2d/statistics
+    --absent ${CMAKE_CURRENT_BINARY_DIR}/pressed_past_refinement_2d/output-pressed_past_refinement_2d/solution)
+set_tests_properties(pressed_past_refinement_2d.no_vtu_folder PROPERTIES
+  FIXTURES_REQUIRED pressed_past_refinement_2d)

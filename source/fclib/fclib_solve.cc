@@ -136,7 +136,7 @@ namespace FrictionalContact
           << outcome.iterations << ' ' << solver.method->iteration_name()
           << " iterations";
     if (outcome.linear_iterations > 0)
-      pcout << " (" << outcome.linear_iterations << " CG iterations)";
+      pcout << " (" << outcome.linear_iterations << " Krylov iterations)";
     pcout << std::endl;
     const auto [res, error] = report(outcome.solution);
     pcout << "FCLIB result: method=" << solver.method_name

@@ -313,6 +313,27 @@ namespace FrictionalContact
 
 
   template <int dim>
+  double
+  ElasticBody<dim>::largest_nodal_magnitude(const Vector &u) const
+  {
+    // The dofs of a vertex all belong to the rank that owns its first one.
+    double largest = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (owned_dofs.is_element(cell->vertex_dof_index(v, 0)))
+            {
+              double square = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                square += std::pow(u[cell->vertex_dof_index(v, c)], 2);
+              largest = std::max(largest, square);
+            }
+    return std::sqrt(Utilities::MPI::max(largest, mpi_communicator));
+  }
+
+
+
+  template <int dim>
   std::vector<std::vector<double>>
   ElasticBody<dim>::rigid_body_modes() const
   {

@@ -18,9 +18,11 @@ namespace FrictionalContact
           {"Free nodes", std::uint64_t(s.count(ContactState::free))},
           {"Stick nodes", std::uint64_t(s.count(ContactState::stick))},
           {"Slip nodes", std::uint64_t(s.count(ContactState::slip))}};
-        for (unsigned int d = 0; d < dim; ++d)
-          columns.push_back(
-            {std::string("Contact force ") + "xyz"[d], s.force[d], true});
+        // x, y and z in 2D too, so that the columns are the same.
+        for (unsigned int d = 0; d < 3; ++d)
+          columns.push_back({std::string("Contact force ") + "xyz"[d],
+                             d < dim ? s.force[d] : 0.,
+                             true});
         columns.push_back({"Normal contact force", s.normal_force, true});
         columns.push_back({"Tangential contact force", s.tangential_force, true});
         columns.push_back({"Contact area", s.contact_area, true});

@@ -13,9 +13,12 @@ namespace FrictionalContact
       Columns
       execute(const IncrementResult<dim> &result) override
       {
-        return {{"Max displacement", result.state.u.linfty_norm(), true},
-                {"Max displacement increment",
-                 result.outcome.du.linfty_norm(),
+        const ElasticBody<dim> &body = result.model.get_body();
+        return {{"Max displacement magnitude",
+                 body.largest_nodal_magnitude(result.state.u),
+                 true},
+                {"Max displacement increment magnitude",
+                 body.largest_nodal_magnitude(result.outcome.du),
                  true}};
       }
     };
@@ -24,7 +27,7 @@ namespace FrictionalContact
       Interface,
       DisplacementStatistics,
       "displacement statistics",
-      "Statistics columns of the displacement: the largest component of u "
-      "and of the increment's du.")
+      "Statistics columns of the displacement: the largest nodal magnitude "
+      "|u| of the displacement and of the increment's du.")
   } // namespace Postprocess
 } // namespace FrictionalContact

@@ -169,12 +169,12 @@ namespace FrictionalContact
       return {};
     const Model<dim> &model = result.model;
     run_on_root(model.get_mpi_communicator(), [&]() {
-      std::filesystem::create_directories(directory + "/solution");
+      std::filesystem::create_directories(vtu_due ? directory + "/solution" :
+                                                    directory);
     });
     if (vtu_due)
       write_vtu_files(result.increment,
                       result.time,
-                      result.last(),
                       model.get_body(),
                       model.get_contact(),
                       model.get_material(),
@@ -234,7 +234,6 @@ namespace FrictionalContact
   void
   OutputWriter<dim>::write_vtu_files(const unsigned int                increment,
                                      const double                      time,
-                                     const bool                        last_increment,
                                      const ElasticBody<dim>           &body,
                                      const ContactOperator<dim>       &contact,
                                      const LinearElasticMaterial<dim> &material,
@@ -347,13 +346,11 @@ namespace FrictionalContact
       directory + "/solution/", "solution", increment, comm, 5, n_groups);
 
     times_and_names.emplace_back(time, "solution/" + pvtu);
-    // A time series only for a loading history.
-    if (!(increment == 1 && last_increment))
-      run_on_root(comm, [&]() {
-        std::ostringstream pvd;
-        DataOutBase::write_pvd_record(pvd, times_and_names);
-        write_file_atomically(directory + "/solution.pvd", pvd.str());
-      });
+    run_on_root(comm, [&]() {
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, times_and_names);
+      write_file_atomically(directory + "/solution.pvd", pvd.str());
+    });
   }
 
 

@@ -71,12 +71,13 @@ namespace FrictionalContact
             << residual_text(solve.residuals) << std::endl;
       else if (contact)
         out << ": " << solve.iterations << ' ' << iteration_name
-            << " iterations, " << solve.linear_iterations << " CG iterations, "
+            << " iterations, " << solve.linear_iterations
+            << " Krylov iterations, "
             << solve.amg_setups << " AMG set-ups; residuals "
-            << residual_text(solve.residuals) << "; free/slip/stick "
+            << residual_text(solve.residuals) << "; free/stick/slip "
             << summary.count(ContactState::free) << '/'
-            << summary.count(ContactState::slip) << '/'
-            << summary.count(ContactState::stick) << std::endl;
+            << summary.count(ContactState::stick) << '/'
+            << summary.count(ContactState::slip) << std::endl;
       else
         out << ": elastic solve, " << solve.linear_iterations
             << " CG iterations (" << last_preconditioner << ")" << std::endl;
@@ -120,15 +121,16 @@ namespace FrictionalContact
             << Input::scientific(res.complementarity) << ", penetration "
             << Input::scientific(res.penetration) << std::endl
             << "    candidates: " << percent(free, c) << " free, "
-            << percent(slip, c) << " slip, " << percent(stick, c)
-            << " stick (" << free << " / " << slip << " / " << stick << " of "
+            << percent(stick, c) << " stick, " << percent(slip, c)
+            << " slip (" << free << " / " << stick << " / " << slip << " of "
             << c << ")" << std::endl;
       out << "    force balance: load " << vector_text(load) << " + contact "
           << vector_text(summary.force) << " + supports "
           << vector_text(support) << " = "
           << Input::scientific((load + summary.force + support).norm())
           << std::endl
-          << "    max |u| = " << Input::to_text(result.state.u.linfty_norm())
+          << "    max |u| = "
+          << Input::to_text(body.largest_nodal_magnitude(result.state.u))
           << std::endl;
       if (model.get_contact().active())
         out << "    contact boundary: deepest penetration of any vertex "

@@ -16,7 +16,7 @@ namespace FrictionalContact
       {
         const SolveStatistics &solve = result.outcome.statistics;
         return {{"Contact solver iterations", std::uint64_t(solve.iterations)},
-                {"CG iterations", std::uint64_t(solve.linear_iterations)},
+                {"Krylov iterations", std::uint64_t(solve.linear_iterations)},
                 {"AMG setups", std::uint64_t(solve.amg_setups)},
                 {"Solve wall time (s)", solve.seconds},
                 {"Force balance residual", solve.residuals.force_balance, true},
@@ -32,7 +32,7 @@ namespace FrictionalContact
       SolverStatistics,
       "solver statistics",
       "Statistics columns of the contact solve: its iterations, the Krylov "
-      "iterations of its linear solves (column 'CG iterations', GMRES "
-      "included), AMG set-ups, wall time and the three residuals.")
+      "iterations of its linear solves (column 'Krylov iterations': CG, or GMRES "
+      "when a node slips), AMG set-ups, wall time and the three residuals.")
   } // namespace Postprocess
 } // namespace FrictionalContact

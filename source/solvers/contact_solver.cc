@@ -49,7 +49,7 @@ namespace FrictionalContact
            << std::setprecision(3) << std::scientific << row.step
            << ", residuals " << row.residuals.force_balance << ' '
            << row.residuals.complementarity << ' ' << row.residuals.penetration
-           << ", " << row.linear_iterations << " CG iterations" << std::defaultfloat
+           << ", " << row.linear_iterations << " Krylov iterations" << std::defaultfloat
            << std::endl;
   }
 

@@ -38,6 +38,11 @@ namespace FrictionalContact
     void
     setup();
 
+    /// The largest nodal magnitude |u(x_v)| over all vertices, for a
+    /// (non-ghosted) vector @p u. Collective.
+    double
+    largest_nodal_magnitude(const Vector &u) const;
+
     /// Assembles K and p. Call after setup().
     void
     assemble();

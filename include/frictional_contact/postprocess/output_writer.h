@@ -55,7 +55,6 @@ namespace FrictionalContact
     void
     write_vtu_files(const unsigned int                increment,
                     const double                      time,
-                    const bool                        last_increment,
                     const ElasticBody<dim>           &body,
                     const ContactOperator<dim>       &contact,
                     const LinearElasticMaterial<dim> &material,
