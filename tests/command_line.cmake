@@ -16,3 +16,10 @@ set_tests_properties(command_line/help PROPERTIES
 add_test(NAME command_line/script_help
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_script_help.py
           ${PROJECT_SOURCE_DIR})
+
+# The ParaView script renders a run (skipped without ParaView and Xvfb).
+add_test(NAME render_contact
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render_contact.sh ${PROJECT_SOURCE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR}/one_increment/output-one_increment)
+set_tests_properties(render_contact PROPERTIES
+  FIXTURES_REQUIRED one_increment SKIP_RETURN_CODE 77)

@@ -1,0 +1,47 @@
+#!/bin/bash
+# Renders every shipped scene (parameters/*.prm) to doc/figures/<scene>.png:
+# runs each scene with the built program in a scratch folder, then
+# scripts/render_contact.py under Xvfb (the last time of each run). A
+# ParaView state of each run (contact.pvsm) is saved in its output folder,
+# next to the data it names: open it in the GUI (File > Load State).
+#
+# usage: scripts/make_gallery.sh [--build build] [--out doc/figures] [scene ...]
+# Needs ParaView and Xvfb (apt-get install paraview python3-paraview xvfb).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build
+out=$root/doc/figures
+scenes=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --build) build=$(cd "$2" && pwd); shift 2 ;;
+    --out) mkdir -p "$2"; out=$(cd "$2" && pwd); shift 2 ;;
+    *) scenes+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
+  esac
+done
+if [ ${#scenes[@]} -eq 0 ]; then
+  scenes=("$root"/parameters/*.prm)
+fi
+for tool in pvbatch xvfb-run; do
+  command -v $tool > /dev/null || {
+    echo "$tool is missing: apt-get install paraview python3-paraview xvfb" >&2
+    exit 1
+  }
+done
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+scratch=$(mktemp -d /tmp/gallery-XXXXXX)
+mkdir -p "$out"
+for scene in "${scenes[@]}"; do
+  name=$(basename "$scene" .prm)
+  mkdir -p "$scratch/$name"
+  # Mesh files are named relative to the working directory (the project's).
+  ln -s "$root/meshes" "$scratch/$name/meshes"
+  echo "== $name"
+  (cd "$scratch/$name" && "$build/contact" "$scene" > run.log 2>&1) || { echo "the run failed: $scratch/$name/run.log" >&2; exit 1; }
+  directory=$(dirname "$(find "$scratch/$name" -name solution.pvd | head -1)")
+  xvfb-run -a pvbatch "$root/scripts/render_contact.py" "$directory" \
+    --out "$out" --name "$name" --state "$directory/contact.pvsm" 2>&1 | grep '^wrote' || {
+      echo "rendering $name failed" >&2; exit 1; }
+done
+echo "pictures in $out (runs in $scratch)"
