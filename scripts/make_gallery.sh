@@ -35,8 +35,6 @@ mkdir -p "$out"
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .prm)
   mkdir -p "$scratch/$name"
-  # Mesh files are named relative to the working directory (the project's).
-  ln -s "$root/meshes" "$scratch/$name/meshes"
   echo "== $name"
   (cd "$scratch/$name" && "$build/contact" "$scene" > run.log 2>&1) || { echo "the run failed: $scratch/$name/run.log" >&2; exit 1; }
   directory=$(dirname "$(find "$scratch/$name" -name solution.pvd | head -1)")

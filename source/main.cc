@@ -5,6 +5,7 @@
 #include <frictional_contact/fclib/fclib_problem.h>
 #include <frictional_contact/fclib/fclib_solve.h>
 #include <frictional_contact/base/input.h>
+#include <frictional_contact/base/parameter_file.h>
 #include <frictional_contact/driver/simulator.h>
 
 #include <algorithm>
@@ -46,65 +47,13 @@ namespace
     "  --help                     this text\n"
     "  --version                  the program's version\n";
 
-  /// The 1-based line of @p position in @p text.
-  std::size_t
-  line_of(const std::string &text, const std::size_t position)
-  {
-    return 1 + std::count(text.begin(), text.begin() + position, '\n');
-  }
-
-
-
-  /**
-   * The file's text; an InputError, naming the file and the fix, if it
-   * cannot be read, is a folder, is empty, is not text, starts with a
-   * byte-order mark or has CR LF ends.
-   */
-  std::string
-  read_parameter_file(const std::string &file_name)
-  {
-    if (std::filesystem::is_directory(file_name))
-      throw InputError("'" + file_name + "' is a folder, not a parameter file; "
-                       "give a .prm file, e.g. parameters/example1.prm");
-    std::ifstream in(file_name, std::ios::binary);
-    if (!in)
-      throw InputError("cannot open the parameter file '" + file_name +
-                       "': check the path");
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string content = text.str();
-    if (content.find_first_not_of(" \t\r\n") == std::string::npos)
-      throw InputError("the parameter file '" + file_name +
-                       "' is empty; a scene sets at least its geometry, "
-                       "supports and loads: start from parameters/example1.prm");
-    if (content.rfind("\xEF\xBB\xBF", 0) == 0)
-      throw InputError("the parameter file '" + file_name +
-                       "' starts with a UTF-8 byte-order mark; save it "
-                       "without one, e.g. with: sed -i '1s/^\\xEF\\xBB\\xBF//' " +
-                       file_name);
-    if (const auto cr = content.find('\r'); cr != std::string::npos)
-      throw InputError(
-        "the parameter file '" + file_name + "' has Windows line endings "
-        "(CR LF, first on line " + std::to_string(line_of(content, cr)) +
-        "); convert it with: sed -i 's/\\r$//' " + file_name);
-    const auto control = std::find_if(content.begin(), content.end(), [](const char c) {
-      return static_cast<unsigned char>(c) < 32 && c != '\n' && c != '\t';
-    });
-    if (control != content.end())
-      throw InputError("the parameter file '" + file_name +
-                       "' is not text (a control byte on line " +
-                       std::to_string(line_of(content, control - content.begin())) +
-                       "); give a deal.II parameter file (.prm)");
-    return content;
-  }
-
   /// The value of "Dimension" in the file (2 if it does not set it).
   unsigned int
   read_dimension(const std::string &file_name)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    prm.parse_input(file_name, "", /*skip_undefined=*/true);
+    ParameterFile(file_name).parse(prm, /*skip_undefined=*/true);
     return prm.get_integer("Dimension");
   }
 
@@ -136,7 +85,7 @@ namespace
     ParameterHandler   prm;
     Simulator<dim>::declare_parameters(prm);
     if (!file_name.empty())
-      prm.parse_input(file_name);
+      ParameterFile(file_name).parse(prm);
     if (!options.fclib_export.empty())
       {
         prm.enter_subsection("Output");
@@ -179,7 +128,7 @@ namespace
     Simulator<dim>::declare_parameters(prm);
     FclibSolve<dim>::set_defaults(prm);
     if (!options.file_name.empty())
-      prm.parse_input(options.file_name);
+      ParameterFile(options.file_name).parse(prm);
     FclibSolve<dim> fclib(prm,
                           std::move(problem),
                           options.fclib_problem,
@@ -249,8 +198,9 @@ main(int argc, char *argv[])
                              "'); see contact --help");
         }
       const std::string &file_name = options.file_name;
+      // A broken parameter file (or include) is reported before anything else.
       if (!file_name.empty())
-        read_parameter_file(file_name);
+        ParameterFile{file_name};
       const bool fclib_mode = !options.fclib_problem.empty();
       if (!fclib_mode && (!options.solution.empty() ||
                           !options.evaluate.empty() ||

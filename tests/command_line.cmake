@@ -23,3 +23,11 @@ add_test(NAME render_contact
           ${CMAKE_CURRENT_BINARY_DIR}/one_increment/output-one_increment)
 set_tests_properties(render_contact PROPERTIES
   FIXTURES_REQUIRED one_increment SKIP_RETURN_CODE 77)
+
+# Paths in a parameter file are relative to the file that names them.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/paths)
+add_test(NAME paths/relative_to_parameter_file
+  COMMAND $<TARGET_FILE:contact> ${CMAKE_CURRENT_SOURCE_DIR}/paths/scene_in_a_folder.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/paths)
+set_tests_properties(paths/relative_to_parameter_file PROPERTIES
+  ENVIRONMENT "${_environment}")

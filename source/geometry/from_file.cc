@@ -60,7 +60,7 @@ namespace FrictionalContact
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
-                        "The coarse mesh, relative to the working directory: "
+                        "The coarse mesh, relative to the parameter file that sets it: "
                         "Gmsh .msh (the physical tags of boundary faces become "
                         "boundary ids, their physical names boundary names), "
                         "or any other format deal.II's GridIn reads by "

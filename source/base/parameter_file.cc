@@ -1,0 +1,154 @@
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/base/parameter_file.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// The 1-based line of @p position in @p text.
+    std::size_t
+    line_of(const std::string &text, const std::size_t position)
+    {
+      return 1 + std::count(text.begin(), text.begin() + position, '\n');
+    }
+
+
+
+    /**
+     * The file's text; an InputError, naming the file and the fix, if it
+     * cannot be read, is a folder, is empty, is not text, starts with a
+     * byte-order mark or has CR LF ends.
+     */
+    std::string
+    checked_text(const std::string &file_name)
+    {
+      if (std::filesystem::is_directory(file_name))
+        throw InputError("'" + file_name + "' is a folder, not a parameter file; "
+                         "give a .prm file, e.g. parameters/example1.prm");
+      std::ifstream in(file_name, std::ios::binary);
+      if (!in)
+        throw InputError("cannot open the parameter file '" + file_name +
+                         "': check the path");
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string content = text.str();
+      if (content.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw InputError("the parameter file '" + file_name +
+                         "' is empty; a scene sets at least its geometry, "
+                         "supports and loads: start from parameters/example1.prm");
+      if (content.rfind("\xEF\xBB\xBF", 0) == 0)
+        throw InputError("the parameter file '" + file_name +
+                         "' starts with a UTF-8 byte-order mark; save it "
+                         "without one, e.g. with: sed -i '1s/^\\xEF\\xBB\\xBF//' " +
+                         file_name);
+      if (const auto cr = content.find('\r'); cr != std::string::npos)
+        throw InputError(
+          "the parameter file '" + file_name + "' has Windows line endings "
+          "(CR LF, first on line " + std::to_string(line_of(content, cr)) +
+          "); convert it with: sed -i 's/\\r$//' " + file_name);
+      const auto control =
+        std::find_if(content.begin(), content.end(), [](const char c) {
+          return static_cast<unsigned char>(c) < 32 && c != '\n' && c != '\t';
+        });
+      if (control != content.end())
+        throw InputError("the parameter file '" + file_name +
+                         "' is not text (a control byte on line " +
+                         std::to_string(line_of(content, control - content.begin())) +
+                         "); give a deal.II parameter file (.prm)");
+      return content;
+    }
+
+
+
+    /// @p path against @p folder, unless it is absolute.
+    std::string
+    resolved(const std::string &path, const std::filesystem::path &folder)
+    {
+      const std::filesystem::path p(path);
+      return p.is_absolute() ? path : (folder / p).lexically_normal().string();
+    }
+  } // namespace
+
+
+
+  ParameterFile::ParameterFile(const std::string &file_name)
+  {
+    std::vector<std::string> including;
+    expand(file_name, including);
+  }
+
+
+
+  void
+  ParameterFile::expand(const std::string        &file_name,
+                        std::vector<std::string> &including)
+  {
+    const std::string content = checked_text(file_name);
+    const std::string identity =
+      std::filesystem::weakly_canonical(file_name).string();
+    if (std::find(including.begin(), including.end(), identity) != including.end())
+      throw InputError("the parameter file '" + file_name +
+                       "' includes itself (through 'include' lines); remove "
+                       "the cycle");
+    including.push_back(identity);
+
+    const std::filesystem::path folder =
+      std::filesystem::path(file_name).parent_path();
+    static const std::regex include_line(R"(^\s*include\s+(\S.*?)\s*$)");
+    static const std::regex mesh_file_line(
+      R"(^(\s*set\s+Mesh file\s*=\s*)([^#\s][^#]*?)(\s*(#.*)?)$)");
+    std::istringstream lines(content);
+    std::string        line;
+    for (unsigned int number = 1; std::getline(lines, line); ++number)
+      {
+        std::smatch match;
+        if (std::regex_match(line, match, include_line))
+          {
+            expand(resolved(match[1], folder), including);
+            continue;
+          }
+        if (std::regex_match(line, match, mesh_file_line))
+          line = match[1].str() + resolved(match[2], folder) + match[3].str();
+        text += line + '\n';
+        origin.emplace_back(file_name, number);
+      }
+    including.pop_back();
+  }
+
+
+
+  void
+  ParameterFile::parse(ParameterHandler &prm, const bool skip_undefined) const
+  {
+    std::istringstream in(text);
+    try
+      {
+        prm.parse_input(in, "expanded", "", skip_undefined);
+      }
+    catch (const ExceptionBase &e)
+      {
+        // deal.II counts the lines of the expanded text: name the file and
+        // the line they came from.
+        std::ostringstream info;
+        e.print_info(info);
+        std::string       message = info.str();
+        static const std::regex where(R"(Line <(\d+)> of file <expanded>)");
+        std::smatch       match;
+        if (std::regex_search(message, match, where))
+          {
+            const unsigned int line = std::stoul(match[1]);
+            if (line >= 1 && line <= origin.size())
+              message = match.prefix().str() + "Line <" +
+                        std::to_string(origin[line - 1].second) + "> of file <" +
+                        origin[line - 1].first + ">" + match.suffix().str();
+          }
+        throw InputError(Input::one_line(message));
+      }
+  }
+} // namespace FrictionalContact
