@@ -44,15 +44,25 @@ namespace FrictionalContact
 
 
 
+  namespace
+  {
+    /// The defaults of the entries that others replace.
+    const std::string default_end_time             = "1";
+    const std::string default_number_of_increments = "1";
+    const std::string default_load_factor          = "t";
+  } // namespace
+
+
+
   void
   LoadingHistory::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("End time",
-                      "1",
+                      default_end_time,
                       Patterns::Double(0.),
                       "The loading history runs over [0, End time] (> 0).");
     prm.declare_entry("Number of increments",
-                      "1",
+                      default_number_of_increments,
                       Patterns::Integer(1),
                       "Equal increments that divide [0, End time] (>= 1).");
     prm.declare_entry("Increment times",
@@ -62,7 +72,7 @@ namespace FrictionalContact
                       "increasing and positive, separated by commas; they "
                       "replace End time and Number of increments.");
     prm.declare_entry("Load factor",
-                      "t",
+                      default_load_factor,
                       Patterns::Anything(),
                       "lambda(t), a muParser expression of the time t that "
                       "scales all loads (tractions and body force). The "
@@ -93,15 +103,21 @@ namespace FrictionalContact
           times.push_back(end_time * l / n);
       }
     else
-      for (const std::string &item : Input::split(times_text, ','))
-        {
-          const double t = Input::parse_vector<1>(times_entry, item)[0];
-          if (!(t > (times.empty() ? 0. : times.back())))
-            Input::fail(times_entry,
-                        times_text,
-                        "positive times in increasing order are expected");
-          times.push_back(t);
-        }
+      {
+        if (prm.get("End time") != default_end_time ||
+            prm.get("Number of increments") != default_number_of_increments)
+          overridden.push_back("<Loading/Increment times> replaces <Loading/"
+                               "End time> and <Loading/Number of increments>");
+        for (const std::string &item : Input::split(times_text, ','))
+          {
+            const double t = Input::parse_vector<1>(times_entry, item)[0];
+            if (!(t > (times.empty() ? 0. : times.back())))
+              Input::fail(times_entry,
+                          times_text,
+                          "positive times in increasing order are expected");
+            times.push_back(t);
+          }
+      }
 
     const std::string table_entry = "Loading/Load table";
     const std::string table_text  = prm.get("Load table");
@@ -123,7 +139,12 @@ namespace FrictionalContact
                                                          1);
       }
     else
-      factor_text = "table " + table_text;
+      {
+        factor_text = "table " + table_text;
+        if (prm.get("Load factor") != default_load_factor)
+          overridden.push_back(
+            "<Loading/Load table> replaces <Loading/Load factor>");
+      }
   }
 
 

@@ -95,6 +95,8 @@ namespace FrictionalContact
           << (n_ranks > 1 ? "s" : "") << std::endl;
     model.print_summary(pcout);
     pcout << "Loading: " << driver.loading().describe() << std::endl;
+    for (const std::string &note : driver.loading().overridden_entries())
+      pcout << "Note: " << note << std::endl;
     const std::string written = postprocessors.describe();
     pcout << "Output: "
           << (written.empty() ? "nothing" :

@@ -245,6 +245,24 @@ namespace FrictionalContact
 
   template <int dim>
   std::string
+  FclibExport<dim>::describe() const
+  {
+    if (!writes_files())
+      return "";
+    std::string which;
+    for (const unsigned int increment : increments)
+      which += (which.empty() ? "" : ", ") + std::to_string(increment);
+    return "FCLIB problems of " +
+           (all ? std::string("every increment") :
+                  "increment" + std::string(increments.size() > 1 ? "s " : " ") +
+                    which) +
+           " (fclib-NNNNN.hdf5)";
+  }
+
+
+
+  template <int dim>
+  std::string
   FclibExport<dim>::file_name(const unsigned int increment) const
   {
     std::ostringstream name;

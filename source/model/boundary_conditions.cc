@@ -92,6 +92,18 @@ namespace FrictionalContact
       parse_boundaries<dim>("Boundary conditions/Prescribed boundaries",
                        prm.get("Prescribed boundaries"),
                        names);
+    for (const auto &prescribed : prescribed_boundaries)
+      for (const auto &fixed : fixed_boundaries)
+        if (fixed.id == prescribed.id)
+          for (unsigned int c = 0; c < dim; ++c)
+            if (fixed.components[c] && prescribed.components[c])
+              {
+                overridden.push_back(
+                  "boundary '" + names.name(prescribed.id) +
+                  "' is in both <Boundary conditions/Fixed boundaries> and "
+                  "<Prescribed boundaries>; it is held fixed");
+                c = dim;
+              }
     const std::string expression = prm.get("Prescribed displacement");
     prescribed_displacement = std::make_unique<FunctionParser<dim>>(dim);
     try

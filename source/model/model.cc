@@ -113,6 +113,8 @@ namespace FrictionalContact
   Model<dim>::print_summary(const ConditionalOStream &out) const
   {
     out << "Scene: " << dim << "D, " << material->describe() << std::endl;
+    for (const std::string &note : boundary_conditions->overridden)
+      out << "Note: " << note << std::endl;
     out << "Mesh: " << triangulation.n_global_active_cells() << " cells; d = "
         << body->n_free_dofs() << " free displacement dofs of "
         << body->get_dof_handler().n_dofs() << std::endl;

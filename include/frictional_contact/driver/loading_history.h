@@ -63,8 +63,17 @@ namespace FrictionalContact
     std::string
     describe() const;
 
+    /// One line per entry the scene sets that another entry replaces.
+    const std::vector<std::string> &
+    overridden_entries() const
+    {
+      return overridden;
+    }
+
   private:
     std::vector<double>                      times;
+    /// One line per entry the scene sets that another entry replaces.
+    std::vector<std::string>                 overridden;
     std::string                              factor_text;
     std::unique_ptr<TimeFunction>            factor_function;
     std::vector<std::pair<double, double>>   factor_table;

@@ -64,6 +64,10 @@ namespace FrictionalContact
       return all || !increments.empty();
     }
 
+    /// "FCLIB problems of increments 1, 3 (fclib-NNNNN.hdf5)", or "".
+    std::string
+    describe() const override;
+
     /// Throws an InputError if an increment named is past the last of a
     /// loading history of @p n_increments.
     void

@@ -40,5 +40,8 @@ namespace FrictionalContact
     std::unique_ptr<FunctionParser<dim>>          prescribed_displacement;
     std::map<types::boundary_id, Tensor<1, dim>> tractions;
     Tensor<1, dim>                                body_force;
+    /// One line per boundary component both fixed and prescribed (fixed
+    /// wins): the scene's prescribed displacement does not act there.
+    std::vector<std::string> overridden;
   };
 } // namespace FrictionalContact
