@@ -97,7 +97,8 @@ namespace FrictionalContact
     pcout << "Loading: " << driver.loading().describe() << std::endl;
     for (const std::string &note : driver.loading().overridden_entries())
       pcout << "Note: " << note << std::endl;
-    const std::string written = postprocessors.describe();
+    const std::string written =
+      postprocessors.describe(driver.times().size());
     pcout << "Output: "
           << (written.empty() ? "nothing" :
                                 written + " in " + output_directory + "/")

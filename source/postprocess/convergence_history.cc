@@ -37,10 +37,10 @@ namespace FrictionalContact
         this->comm      = comm;
       }
 
-      bool
-      writes_files() const override
+      std::string
+      describe() const override
       {
-        return enabled;
+        return enabled ? "convergence histories (history-NNNNN.txt)" : "";
       }
 
       bool

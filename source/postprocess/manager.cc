@@ -91,7 +91,7 @@ namespace FrictionalContact
 
     template <int dim>
     std::string
-    Manager<dim>::describe() const
+    Manager<dim>::describe(const unsigned int n_increments) const
     {
       std::string text;
       for (const auto &postprocessor : postprocessors)
@@ -102,6 +102,14 @@ namespace FrictionalContact
         }
       if (write_statistics)
         text += (text.empty() ? "" : ", ") + std::string("statistics");
+      if (checkpoint_due(n_increments, n_increments))
+        text += (text.empty() ? "" : ", ") +
+                std::string("checkpoint/ every ") +
+                (checkpoint_every == 1 ? std::string("increment") :
+                                         std::to_string(checkpoint_every) +
+                                           " increments");
+      if (writes_files())
+        text += ", parameters.prm";
       return text;
     }
 

@@ -220,11 +220,13 @@ namespace FrictionalContact
   {
     std::string text;
     if (write_vtu)
-      text += write_every == 1 ? "vtu every increment" :
-                                 "vtu every " + std::to_string(write_every) +
-                                   " increments";
+      text += (write_every == 1 ? std::string("vtu every increment") :
+                                  "vtu every " + std::to_string(write_every) +
+                                    " increments") +
+              " (solution/, solution.pvd)";
     if (write_csv)
-      text += std::string(text.empty() ? "" : ", ") + "csv tables";
+      text += std::string(text.empty() ? "" : ", ") +
+              "csv tables (contact-NNNNN.csv, displacement-NNNNN.csv)";
     return text;
   }
 

@@ -37,9 +37,11 @@ namespace FrictionalContact
       void
       check_increments(const unsigned int n_increments) const;
 
-      /// "vtu every increment, statistics", or "" if nothing is written.
+      /// Every file a run of @p n_increments writes ("vtu every increment
+      /// (solution/, solution.pvd), statistics, parameters.prm"), or "" if
+      /// nothing is written.
       std::string
-      describe() const;
+      describe(const unsigned int n_increments) const;
 
       /// Whether a checkpoint is due after increment @p increment (from 1)
       /// of @p n_increments.
