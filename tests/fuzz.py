@@ -141,13 +141,15 @@ def mesh_cases(runner, parameters, count, rng):
         scene = rng.choice(scenes)
         text = open(scene, encoding="utf-8").read()
         mesh = re.search(r"set Mesh file\s*=\s*(\S+)", text).group(1)
-        source = os.path.join(os.path.dirname(parameters), mesh)
-        target = os.path.join(runner.folder, mesh)
-        os.makedirs(os.path.dirname(target), exist_ok=True)
+        # The mesh file is relative to the scene; the damaged copy goes
+        # into the runner's folder, next to the scene it runs.
+        source = os.path.join(os.path.dirname(scene), mesh)
+        damaged_name = "damaged-" + os.path.basename(mesh)
         with open(source, "rb") as f:
             damaged = corrupt(f.read(), rng)
-        with open(target, "wb") as f:
+        with open(os.path.join(runner.folder, damaged_name), "wb") as f:
             f.write(damaged)
+        text = re.sub(r"(set Mesh file\s*=\s*)\S+", r"\g<1>" + damaged_name, text)
         runner.run(f"mesh{case}", "set Output directory = out\n" +
                    re.sub(r"(?m)^set Output directory.*$", "", text),
                    f"{os.path.basename(scene)} with a damaged {mesh}")
@@ -205,6 +207,11 @@ def main():
             seed_file = rng.choice(seeds)
             lines = open(seed_file, encoding="utf-8").readlines()
             lines = [l for l in lines if not l.startswith("set Output directory")]
+            # The case runs from another folder: its mesh file by full path.
+            lines = [re.sub(r"(set Mesh file\s*=\s*)(\S+)",
+                            lambda m: m.group(1) + os.path.join(
+                                os.path.dirname(seed_file), m.group(2)), l)
+                     for l in lines]
             for _ in range(rng.randrange(1, 4)):
                 lines = mutate(lines, rng)
             runner.run(f"case{case}", "set Output directory = out\n" + "".join(lines),

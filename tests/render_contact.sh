@@ -16,14 +16,22 @@ for tool in pvbatch xvfb-run; do
     exit 77
   fi
 done
-if ! pvbatch --version > /dev/null 2>&1 ||
-   ! xvfb-run -a pvbatch -c "import paraview.simple" > /dev/null 2>&1; then
-  echo "SKIPPED: ParaView's Python is not installed (apt-get install python3-paraview)"
-  exit 77
-fi
-picture=$(mktemp -d)/render
-xvfb-run -a pvbatch "$1/scripts/render_contact.py" "$2" --out "$(dirname "$picture")" \
-  --name render --size 900x300 || exit 1
-size=$(stat -c %s "$picture.png" 2>/dev/null || echo 0)
-echo "$picture.png: $size bytes"
-[ "$size" -gt 10000 ]
+folder=$(mktemp -d)
+# Xvfb can be slow to come up on a loaded machine ("bad X server
+# connection"): try three times.
+for attempt in 1 2 3; do
+  log=$(xvfb-run -a -e /dev/stdout pvbatch "$1/scripts/render_contact.py" "$2" \
+          --out "$folder" --name render --size 900x300 2>&1)
+  code=$?
+  echo "$log" | grep -v '^\s*$' | tail -5
+  if echo "$log" | grep -q "No module named 'paraview'"; then
+    echo "SKIPPED: ParaView's Python is not installed (apt-get install python3-paraview)"
+    exit 77
+  fi
+  [ $code -eq 0 ] && break
+  echo "attempt $attempt failed (exit code $code)"
+  sleep 2
+done
+size=$(stat -c %s "$folder/render.png" 2>/dev/null || echo 0)
+echo "$folder/render.png: $size bytes"
+[ $code -eq 0 ] && [ "$size" -gt 10000 ]
