@@ -6,10 +6,12 @@ usage: check_statistics.py statistics --rows FIRST-LAST
        check_statistics.py statistics --rows FIRST-LAST
            --same-as OTHER_STATISTICS "column" [--tolerance 0.1]
        check_statistics.py statistics --rows FIRST-LAST --at-most "column" VALUE
+       check_statistics.py statistics --rows 1-1 --same-columns OTHER_STATISTICS
 Passes if numerator / denominator = VALUE within the relative tolerance on
 every row of the range (rows counted from 1, as the increments); or if the
 column equals that of the other file within the relative tolerance; or if
-the column is at most VALUE on every row of the range.
+the column is at most VALUE on every row of the range; or if both files
+have the same columns in the same order (a 2D and a 3D run, say).
 """
 import argparse
 import re
@@ -38,6 +40,7 @@ def main():
                         help="numerator / denominator in [LOW, HIGH)")
     parser.add_argument("--same-as", nargs=2)
     parser.add_argument("--at-most", nargs=2, metavar=("COLUMN", "VALUE"))
+    parser.add_argument("--same-columns")
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
 
@@ -55,6 +58,17 @@ def main():
             print(f"increment {row[0]}: {column} {a:g} against {b:g} "
                   f"(relative difference {error:.1e}, {'ok' if passed else 'ABOVE'} "
                   f"{args.tolerance:g})")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
+    if args.same_columns:
+        other, _ = read_statistics(args.same_columns)
+        order = sorted(columns, key=columns.get)
+        other_order = sorted(other, key=other.get)
+        ok = order == other_order and len(order) > 0
+        for a, b in zip(order, other_order):
+            print(f"{a!r} {'==' if a == b else '!='} {b!r}")
+        if len(order) != len(other_order):
+            print(f"{len(order)} columns against {len(other_order)}")
         print("PASSED" if ok else "FAILED")
         return 0 if ok else 1
     if args.at_most:
