@@ -9,6 +9,7 @@
 #include <frictional_contact/driver/simulator.h>
 
 #include <algorithm>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -49,11 +50,11 @@ namespace
 
   /// The value of "Dimension" in the file (2 if it does not set it).
   unsigned int
-  read_dimension(const std::string &file_name)
+  read_dimension(const ParameterFile &parameters)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    ParameterFile(file_name).parse(prm, /*skip_undefined=*/true);
+    parameters.parse(prm, /*skip_undefined=*/true);
     return prm.get_integer("Dimension");
   }
 
@@ -68,6 +69,8 @@ namespace
   struct Options
   {
     std::string file_name;
+    /// The parameter file, read once (empty without one).
+    std::optional<ParameterFile> parameters;
     bool        print_parameters = false;
     bool        json             = false;
     std::string fclib_export;
@@ -81,11 +84,10 @@ namespace
   void
   run(const Options &options, const Task task)
   {
-    const std::string &file_name = options.file_name;
-    ParameterHandler   prm;
+    ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
-    if (!file_name.empty())
-      ParameterFile(file_name).parse(prm);
+    if (options.parameters)
+      options.parameters->parse(prm);
     if (!options.fclib_export.empty())
       {
         prm.enter_subsection("Output");
@@ -127,8 +129,8 @@ namespace
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
     FclibSolve<dim>::set_defaults(prm);
-    if (!options.file_name.empty())
-      ParameterFile(options.file_name).parse(prm);
+    if (options.parameters)
+      options.parameters->parse(prm);
     FclibSolve<dim> fclib(prm,
                           std::move(problem),
                           options.fclib_problem,
@@ -200,7 +202,7 @@ main(int argc, char *argv[])
       const std::string &file_name = options.file_name;
       // A broken parameter file (or include) is reported before anything else.
       if (!file_name.empty())
-        ParameterFile{file_name};
+        options.parameters.emplace(file_name);
       const bool fclib_mode = !options.fclib_problem.empty();
       if (!fclib_mode && (!options.solution.empty() ||
                           !options.evaluate.empty() ||
@@ -225,7 +227,7 @@ main(int argc, char *argv[])
       if (file_name.empty() && !options.print_parameters)
         throw InputError("no parameter file given; see contact --help");
 
-      const unsigned int dim = file_name.empty() ? 2 : read_dimension(file_name);
+      const unsigned int dim = file_name.empty() ? 2 : read_dimension(*options.parameters);
       const Task task = !options.print_parameters ? Task::run :
                         options.json ? Task::print_parameters_as_json :
                                        Task::print_parameters;
