@@ -7,6 +7,7 @@ usage: check_statistics.py statistics --rows FIRST-LAST
            --same-as OTHER_STATISTICS "column" [--tolerance 0.1]
        check_statistics.py statistics --rows FIRST-LAST --at-most "column" VALUE
        check_statistics.py statistics --rows 1-1 --same-columns OTHER_STATISTICS
+       check_statistics.py statistics --rows FIRST-LAST --between "column" LOW HIGH
 Passes if numerator / denominator = VALUE within the relative tolerance on
 every row of the range (rows counted from 1, as the increments); or if the
 column equals that of the other file within the relative tolerance; or if
@@ -41,6 +42,7 @@ def main():
     parser.add_argument("--same-as", nargs=2)
     parser.add_argument("--at-most", nargs=2, metavar=("COLUMN", "VALUE"))
     parser.add_argument("--same-columns")
+    parser.add_argument("--between", nargs=3, metavar=("COLUMN", "LOW", "HIGH"))
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
 
@@ -69,6 +71,17 @@ def main():
             print(f"{a!r} {'==' if a == b else '!='} {b!r}")
         if len(order) != len(other_order):
             print(f"{len(order)} columns against {len(other_order)}")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
+    if args.between:
+        column, low, high = args.between[0], float(args.between[1]), float(args.between[2])
+        ok = len(rows) >= last
+        for row in rows[first - 1:last]:
+            value = float(row[columns[column]])
+            passed = low <= value <= high
+            ok = ok and passed
+            print(f"increment {row[0]}: {column} {value:g} "
+                  f"({'in' if passed else 'NOT in'} [{low:g}, {high:g}])")
         print("PASSED" if ok else "FAILED")
         return 0 if ok else 1
     if args.at_most:

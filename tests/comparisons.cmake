@@ -239,3 +239,23 @@ add_test(NAME statistics.same_columns_2d_3d
     ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4/output-example2_ny4/statistics)
 set_tests_properties(statistics.same_columns_2d_3d PROPERTIES
   FIXTURES_REQUIRED "example1_ny10;example2_ny4")
+
+# AMG set-ups (doc/algorithm.md): Algorithm 2 builds the AMG of K for the
+# elastic pre-solve and one of K + sigma I; the Newton method reuses K's.
+# compare_output.py ignores these counts, so they are checked here.
+foreach(_case "example1_ny10;2" "example1_newton;1")
+  list(GET _case 0 _name)
+  list(GET _case 1 _setups)
+  add_test(NAME ${_name}.amg_setups
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_name}/output-${_name}/statistics
+      --rows 1-1 --between "AMG setups" ${_setups} ${_setups})
+  set_tests_properties(${_name}.amg_setups PROPERTIES FIXTURES_REQUIRED ${_name})
+endforeach()
+
+# The history file's columns (README, scripts/plot_history.py reads them).
+add_test(NAME example1_history.columns
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_files.py
+    --contains "${CMAKE_CURRENT_BINARY_DIR}/example1_history/output-*/history-00001.txt"
+    "# iteration seconds force_balance complementarity penetration step linear_iterations")
+set_tests_properties(example1_history.columns PROPERTIES FIXTURES_REQUIRED example1_history)
