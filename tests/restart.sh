@@ -91,8 +91,14 @@ EOT
 echo "the resumed run ends where the uninterrupted one does"
 
 # A finished run's checkpoint is of its last increment: nothing to resume.
-mpirun -np 2 "$contact" resume.prm > finished.log 2>&1
-grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" finished.log || { cat finished.log; fail "resuming a finished run"; }
+mpirun -np 2 "$contact" resume.prm > finished.log 2>&1; code=$?
+grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" finished.log \
+  && [ $code -eq 1 ] || { cat finished.log; fail "resuming a finished run (exit code $code)"; }
+# Resume computation = auto finds that checkpoint too.
+printf "include killed.prm\nset Resume computation = auto\n" > auto.prm
+"$contact" auto.prm > auto.log 2>&1; code=$?
+grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" auto.log \
+  && [ $code -eq 1 ] || { cat auto.log; fail "Resume computation = auto did not find the checkpoint"; }
 
 # The checkpoint refuses another scene, naming the entries that differ.
 printf "include resume.prm\nsubsection Contact\n  set Friction coefficient = 0.3\nend\n" > other.prm
@@ -113,4 +119,16 @@ for file in mesh_fixed.data mesh state; do
   done
   rm -rf out-killed/checkpoint; mv saved out-killed/checkpoint
 done
-echo "a checkpoint of another scene and truncated files are refused"
+# ... a checkpoint that lacks a file, and one of another format.
+cp -r out-killed/checkpoint saved
+rm out-killed/checkpoint/state
+"$contact" resume.prm > missing.log 2>&1; code=$?
+grep -q "^Error: .*lacks its file 'state'" missing.log && [ $code -eq 1 ] \
+  || { cat missing.log; fail "a checkpoint without its state file was not refused"; }
+rm -rf out-killed/checkpoint; cp -r saved out-killed/checkpoint
+sed -i '1s/.*/contact checkpoint, format 1/' out-killed/checkpoint/manifest
+"$contact" resume.prm > format.log 2>&1; code=$?
+grep -q "^Error: .*was written in another format ('contact checkpoint, format 1'" format.log \
+  && [ $code -eq 1 ] || { cat format.log; fail "a checkpoint of another format was not refused"; }
+rm -rf out-killed/checkpoint; mv saved out-killed/checkpoint
+echo "a checkpoint of another scene, of another format, without a file, or with truncated files is refused"
