@@ -90,3 +90,11 @@ foreach(_problem Box_Stacks-i0035-31-0 GFC3D_TwoRods1
     set_tests_properties(${_name} PROPERTIES ENVIRONMENT "${_environment}")
   endforeach()
 endforeach()
+
+# A failed increment is exported without its solution.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/fclib/failed_export)
+add_test(NAME fclib/failed_export
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/fclib_failed_export.sh
+          $<TARGET_FILE:contact> ${PROJECT_SOURCE_DIR}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/fclib/failed_export)
+set_tests_properties(fclib/failed_export PROPERTIES ENVIRONMENT "${_environment}")
