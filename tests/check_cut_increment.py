@@ -7,9 +7,13 @@ need a cut (that moves with the last digits of the linear algebra):
     most `Maximum cuts` in a row, each cut halving the increment it names;
   - the increments that converged march in strictly increasing times to
     the end time, each numbered one more than the one before;
-  - the run ends with the state at the end time, its forces in balance.
+  - the run ends with the state at the end time, its forces in balance;
+  - with a statistics file, its rows have the times of the converged
+    increments (the cut times included), one row each (to the six digits
+    the screen prints).
 
 usage: check_cut_increment.py <screen output> <end time> <maximum cuts>
+                              [statistics]
 """
 import re
 import sys
@@ -25,7 +29,7 @@ def main():
     if "--help" in sys.argv or "-h" in sys.argv:
         print(__doc__)
         return 0
-    if len(sys.argv) != 4:
+    if len(sys.argv) not in (4, 5):
         print(__doc__)
         return 2
     lines = open(sys.argv[1], encoding="utf-8").read().splitlines()
@@ -66,6 +70,14 @@ def main():
         scale = max(abs(f) for f in forces)
         if not float(balance[-1].group(4)) <= 1e-8 * scale:
             problems.append(f"forces out of balance: {balance[-1].group(0)}")
+    if len(sys.argv) == 5:
+        rows = [l.split() for l in open(sys.argv[4], encoding="utf-8")
+                if l.strip() and not l.startswith("#")]
+        recorded = [float(row[1]) for row in rows]
+        if len(recorded) != len(times) or any(
+                abs(a - b) > 5e-6 * abs(b) for a, b in zip(recorded, times)):
+            problems.append(f"the statistics have the times {recorded}, the "
+                            f"screen {times}")
     for p in problems:
         print("*** " + p)
     print(f"{cuts} cuts, {len(times)} converged increments to t = "

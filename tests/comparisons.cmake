@@ -195,7 +195,8 @@ set_tests_properties(cut_increment.run PROPERTIES FIXTURES_SETUP cut_increment
   ENVIRONMENT "${_environment}")
 add_test(NAME cut_increment.policy
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_cut_increment.py
-          ${CMAKE_CURRENT_BINARY_DIR}/cut_increment/output 1 5)
+          ${CMAKE_CURRENT_BINARY_DIR}/cut_increment/output 1 5
+          ${CMAKE_CURRENT_BINARY_DIR}/cut_increment/output-cut_increment/statistics)
 set_tests_properties(cut_increment.policy PROPERTIES FIXTURES_REQUIRED cut_increment)
 
 # Pressed past the locally refined region (issue 17): no vertex of the
