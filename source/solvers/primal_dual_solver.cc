@@ -136,12 +136,9 @@ namespace FrictionalContact
     double step_goal = this->stop.tolerance;
     if (!paper_scaling)
       {
-        double stiffness = 0;
-        for (const double c_j : contact.normal_stiffness(problem.stiffness))
-          stiffness += c_j;
-        stiffness = Utilities::MPI::sum(stiffness, du.get_mpi_communicator()) /
-                    std::max<double>(1, contact.n_candidates());
-        alpha *= stiffness;
+        alpha *= mean_over_candidates(contact,
+                                      contact.normal_stiffness(problem.stiffness),
+                                      du.get_mpi_communicator());
         step_goal *= problem.length_scale;
       }
     double beta = 1. / (alpha * std::pow(problem.largest_singular_value_T, 2));

@@ -4,7 +4,6 @@
 #include <frictional_contact/solvers/semismooth_newton_linearization.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
-#include <numeric>
 #include <sstream>
 
 namespace FrictionalContact
@@ -118,20 +117,6 @@ namespace FrictionalContact
         return k > last_progress + 25;
       }
     };
-
-    /// The mean of c_j over all candidates.
-    template <int dim>
-    double
-    mean_normal_stiffness(const ContactMap<dim>     &contact,
-                          const std::vector<double> &c,
-                          const MPI_Comm             comm)
-    {
-      const double sum = std::accumulate(c.begin(), c.end(), 0.);
-      return Utilities::MPI::sum(sum, comm) /
-             std::max<double>(1, contact.n_candidates());
-    }
-
-
 
     /// Whether any candidate on any rank has a reaction (a warm start).
     template <int dim>
@@ -358,7 +343,7 @@ namespace FrictionalContact
     // The force balance residual K du - p - T r of the previous iterate.
     Vector                      previous_residual(du), residual(du);
     std::vector<Tensor<1, dim>> previous_r(n), admissible_r(n);
-    const double mean_c = mean_normal_stiffness(contact, c, comm);
+    const double mean_c = mean_over_candidates(contact, c, comm);
     K.vmult(K_du, du);
     contact.apply(r, T_r);
     SolveStatistics           result;

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/solvers/friction_cone.h>
 
+#include <numeric>
 #include <vector>
 
 namespace FrictionalContact
@@ -75,4 +77,18 @@ namespace FrictionalContact
       return friction_cone().mu;
     }
   };
+
+  /// The mean over all candidates of @p local_values, one value per local
+  /// candidate of @p contact (such as its normal_stiffness()). Collective.
+  template <int dim>
+  double
+  mean_over_candidates(const ContactMap<dim>     &contact,
+                       const std::vector<double> &local_values,
+                       const MPI_Comm             comm)
+  {
+    const double sum =
+      std::accumulate(local_values.begin(), local_values.end(), 0.);
+    return Utilities::MPI::sum(sum, comm) /
+           std::max<double>(1, contact.n_candidates());
+  }
 } // namespace FrictionalContact
