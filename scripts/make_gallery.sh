@@ -1,7 +1,7 @@
 #!/bin/bash
 # Renders every shipped scene (parameters/*.prm) to doc/figures/<scene>.png:
 # runs each scene with the built program in a scratch folder, then
-# scripts/render_contact.py under Xvfb (the last time of each run). A
+# scripts/render_contact.py on a virtual display (the last time of each run). A
 # ParaView state of each run (contact.pvsm) is saved in its output folder,
 # next to the data it names: open it in the GUI (File > Load State).
 #
@@ -23,7 +23,7 @@ done
 if [ ${#scenes[@]} -eq 0 ]; then
   scenes=("$root"/parameters/*.prm)
 fi
-for tool in pvbatch xvfb-run; do
+for tool in pvbatch Xvfb; do
   command -v $tool > /dev/null || {
     echo "$tool is missing: apt-get install paraview python3-paraview xvfb" >&2
     exit 1
@@ -38,7 +38,7 @@ for scene in "${scenes[@]}"; do
   echo "== $name"
   (cd "$scratch/$name" && "$build/contact" "$scene" > run.log 2>&1) || { echo "the run failed: $scratch/$name/run.log" >&2; exit 1; }
   directory=$(dirname "$(find "$scratch/$name" -name solution.pvd | head -1)")
-  xvfb-run -a pvbatch "$root/scripts/render_contact.py" "$directory" \
+  "$root/scripts/headless.sh" pvbatch --no-mpi "$root/scripts/render_contact.py" "$directory" \
     --out "$out" --name "$name" --state "$directory/contact.pvsm" 2>&1 | grep '^wrote' || {
       echo "rendering $name failed" >&2; exit 1; }
 done

@@ -8,9 +8,12 @@ views side by side,
      coloured by the contact pressure, seen from the obstacle;
   3. the same face coloured by the contact state (0 free, 1 stick, 2 slip).
 
-Run it with ParaView's Python, without a display through Xvfb:
+Run it with ParaView's Python, without a screen on a virtual display:
 
-  xvfb-run -a pvbatch scripts/render_contact.py OUTPUT_DIR [options]
+  scripts/headless.sh pvbatch --no-mpi scripts/render_contact.py OUTPUT_DIR [options]
+
+(xvfb-run -a pvbatch ... works as well; scripts/headless.sh adds a time
+limit and cannot wait forever for the display.)
 
 OUTPUT_DIR is a run's <Output directory> (solution.pvd, parameters.prm).
 Options:
@@ -166,7 +169,7 @@ def main():
         from paraview import simple
     except ImportError:
         sys.exit("ParaView's Python is missing: run with pvbatch "
-                 "(apt-get install paraview xvfb; xvfb-run -a pvbatch ...)")
+                 "(apt-get install paraview xvfb; scripts/headless.sh pvbatch ...)")
 
     entries = read_parameters(prm)
     dim = int(entries.get("Dimension", "2"))

@@ -25,7 +25,7 @@ if [ ! -f build/CMakeCache.txt ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type"
 fi
 cmake --build build -j "$jobs"
-if ! command -v pvbatch > /dev/null || ! command -v xvfb-run > /dev/null; then
+if ! command -v pvbatch > /dev/null || ! command -v Xvfb > /dev/null; then
   echo "-- optional: ParaView pictures (scripts/render_contact.py, scripts/make_gallery.sh)"
   echo "   need: apt-get install paraview python3-paraview xvfb"
 fi

@@ -22,7 +22,7 @@ add_test(NAME render_contact
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render_contact.sh ${PROJECT_SOURCE_DIR}
           ${CMAKE_CURRENT_BINARY_DIR}/one_increment/output-one_increment)
 set_tests_properties(render_contact PROPERTIES
-  FIXTURES_REQUIRED one_increment SKIP_RETURN_CODE 77)
+  FIXTURES_REQUIRED one_increment SKIP_RETURN_CODE 77 TIMEOUT 420)
 
 # Paths in a parameter file are relative to the file that names them.
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/paths)
