@@ -163,15 +163,23 @@ contact_compare_tables(extreme_stiff_newton.same_displacement
 
 # Classical solutions (check_analytic.py): Hertz's contact radius and peak
 # pressure, Cattaneo-Mindlin's stick zone, the sliding block's T = mu N.
+# The adaptive Hertz scenes are held to 1 percent (2D) and 2 percent (3D).
 foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
-              cattaneo_3d:cattaneo sliding_block:sliding)
+              cattaneo_3d:cattaneo sliding_block:sliding
+              "hertz_2d_adaptive:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.01"
+              "hertz_3d_adaptive.mpirun=2:hertz:--radius-tolerance:0.02:--pressure-tolerance:0.02")
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
   list(GET _case 1 _problem)
+  set(_options "")
+  list(LENGTH _case _n)
+  if(_n GREATER 2)
+    list(SUBLIST _case 2 -1 _options)
+  endif()
   string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
   add_test(NAME ${_test}.analytic
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py
-      ${_problem} ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base})
+      ${_problem} ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} ${_options})
   set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
 endforeach()
 
@@ -202,11 +210,12 @@ set_tests_properties(cut_increment.policy PROPERTIES FIXTURES_REQUIRED cut_incre
 # Pressed past the locally refined region (issue 17): no vertex of the
 # contact boundary, hanging nodes included, goes through the plane. The
 # bound is 1e-10 times the pressing depth (0.04), the Newton tolerance.
-foreach(_dim 2d 3d)
-  set(_name pressed_past_refinement_${_dim})
+foreach(_name pressed_past_refinement_2d pressed_past_refinement_3d
+              hertz_2d_adaptive hertz_3d_adaptive.mpirun=2)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_name})
   add_test(NAME ${_name}.no_penetration
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
-      ${CMAKE_CURRENT_BINARY_DIR}/${_name}/output-${_name}/statistics
+      ${CMAKE_CURRENT_BINARY_DIR}/${_name}/output-${_base}/statistics
       --rows 1-1 --at-most "Max boundary penetration" 4e-12)
   set_tests_properties(${_name}.no_penetration PROPERTIES FIXTURES_REQUIRED ${_name})
 endforeach()
@@ -260,3 +269,21 @@ add_test(NAME example1_history.columns
     --contains "${CMAKE_CURRENT_BINARY_DIR}/example1_history/output-*/history-00001.txt"
     "# iteration seconds force_balance complementarity penetration step linear_iterations")
 set_tests_properties(example1_history.columns PROPERTIES FIXTURES_REQUIRED example1_history)
+
+# Adaptive refinement (issue 17): the same mesh and forces on one and two
+# ranks, and a run resumed on an adapted mesh ends where an uninterrupted
+# one does.
+add_test(NAME hertz_2d_adaptive.same_on_two_ranks
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_adaptive.mpirun=2/output-hertz_2d_adaptive/statistics
+    --rows 1-1 --same-as ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_adaptive/output-hertz_2d_adaptive/statistics
+    "Normal contact force" --tolerance 1e-8)
+set_tests_properties(hertz_2d_adaptive.same_on_two_ranks PROPERTIES
+  FIXTURES_REQUIRED "hertz_2d_adaptive;hertz_2d_adaptive.mpirun=2")
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
+add_test(NAME restart_adaptive
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_adaptive.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
+set_tests_properties(restart_adaptive PROPERTIES ENVIRONMENT "${_environment}"
+  PROCESSORS 2)

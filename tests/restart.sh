@@ -23,25 +23,13 @@ done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm
 
 fail() { echo "*** $1"; exit 1; }
-rows() {
-  if [ -f out-killed/statistics ]; then grep -c -v '^#' out-killed/statistics; else echo 0; fi
-}
-
-# kill_when <rows> <ranks> <scene>: starts the run and kills it with
-# SIGKILL as soon as its statistics hold <rows> rows.
+# kill_when <rows> <ranks> <scene>: kills the run once <rows> increments
+# are in its statistics.
 kill_when() {
-  local target=$1 ranks=$2 scene=$3
-  if [ "$ranks" -gt 1 ]; then
-    mpirun -np "$ranks" "$contact" "$scene" > "killed-$target.log" 2>&1 &
-  else
-    "$contact" "$scene" > "killed-$target.log" 2>&1 &
-  fi
-  local pid=$!
-  while kill -0 $pid 2>/dev/null && [ "$(rows)" -lt "$target" ]; do sleep 0.01; done
-  kill -0 $pid 2>/dev/null || fail "the run ended before it could be killed"
-  pkill -KILL -P $pid 2>/dev/null; kill -KILL $pid 2>/dev/null
-  wait $pid 2>/dev/null
-  echo "killed after $(rows) rows of statistics on $ranks rank(s)"
+  local launcher=()
+  [ "$2" -gt 1 ] && launcher=(mpirun -np "$2")
+  "$source_dir/tests/kill_when.sh" "$1" out-killed/statistics "killed-$1.log" \
+    "${launcher[@]}" "$contact" "$3" || fail "could not kill the run on $2 rank(s)"
 }
 
 "$contact" whole.prm > whole.log 2>&1 || fail "the uninterrupted run failed"

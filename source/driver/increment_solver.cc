@@ -33,13 +33,22 @@ namespace FrictionalContact
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
     linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
+    mu_pi = 0;
     if (contact.active())
-      {
-        sigma_T = contact.largest_singular_value();
-        pcout << "Solver: " << solver.method->describe() << std::endl
-              << "    sigma_T = " << Input::to_text(sigma_T)
-              << " (largest singular value of T)" << std::endl;
-      }
+      sigma_T = contact.largest_singular_value();
+    contact_active = contact.active();
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::print_method() const
+  {
+    if (contact_active)
+      pcout << "Solver: " << solver.method->describe() << std::endl
+            << "    sigma_T = " << Input::to_text(sigma_T)
+            << " (largest singular value of T)" << std::endl;
   }
 
 

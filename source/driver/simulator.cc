@@ -34,6 +34,7 @@ namespace FrictionalContact
                       "run was killed; the number of MPI ranks may differ. "
                       "auto: resume if there is a checkpoint, else start.");
     Model<dim>::declare_parameters(prm);
+    AdaptiveRefinement<dim>::declare_parameters(prm);
     IncrementDriver::declare_parameters(prm);
     IncrementSolver<dim>::declare_parameters(prm);
     Postprocess::Manager<dim>::declare_parameters(prm);
@@ -47,6 +48,7 @@ namespace FrictionalContact
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , output_directory(prm.get("Output directory"))
     , model(prm, comm)
+    , adaptivity(prm)
     , driver(prm)
     , increment_solver(prm, pcout)
     , postprocessors(prm, output_directory, comm)
@@ -94,6 +96,8 @@ namespace FrictionalContact
           << DEAL_II_PACKAGE_VERSION << ", " << n_ranks << " MPI rank"
           << (n_ranks > 1 ? "s" : "") << std::endl;
     model.print_summary(pcout);
+    if (adaptivity.active())
+      pcout << "Mesh refinement: " << adaptivity.describe() << std::endl;
     pcout << "Loading: " << driver.loading().describe() << std::endl;
     for (const std::string &note : driver.loading().overridden_entries())
       pcout << "Note: " << note << std::endl;
@@ -120,6 +124,7 @@ namespace FrictionalContact
     state.contact_forces.assign(model.get_contact().n_local(), Tensor<1, dim>());
     const unsigned int first_increment = resume ? load_checkpoint() : 0;
     increment_solver.initialize(model);
+    increment_solver.print_method();
 
     driver.run(
       first_increment,
@@ -132,20 +137,16 @@ namespace FrictionalContact
 
 
   template <int dim>
-  void
-  Simulator<dim>::solve_increment(const unsigned int l)
+  IncrementOutcome<dim>
+  Simulator<dim>::solve_on_current_mesh(const unsigned int l)
   {
-    const double t_start     = driver.start_time(l);
     const double t           = driver.times()[l];
     const double load_factor = driver.loading().load_factor(t);
-    ContactOperator<dim> &contact = model.get_contact();
-    contact.move_obstacle(contact.obstacle_displacement(t));
-
-    const IncrementOutcome<dim> outcome =
+    IncrementOutcome<dim> outcome =
       increment_solver.solve(model,
                              state,
                              l + 1,
-                             t_start,
+                             driver.start_time(l),
                              t,
                              load_factor,
                              postprocessors.needs_history(),
@@ -167,6 +168,73 @@ namespace FrictionalContact
           Input::scientific(res.penetration) +
           ". The increments before it are written; this one is not");
       }
+    return outcome;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::adapt_mesh(const IncrementOutcome<dim> &outcome,
+                             const unsigned int           cycle)
+  {
+    TimerOutput::Scope scope(*timer, "Mesh refinement");
+    const ElasticBody<dim>     &body    = model.get_body();
+    const ContactOperator<dim> &contact = model.get_contact();
+    TrilinosWrappers::MPI::Vector solution = state.u;
+    solution += outcome.du;
+    TrilinosWrappers::MPI::Vector solution_ghosted = body.make_ghosted_vector();
+    solution_ghosted                               = solution;
+
+    // The contact forces of the state go over as tractions (force per
+    // nodal area), which do not depend on the mesh.
+    std::vector<Tensor<1, dim>> tractions(contact.n_local());
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      tractions[j] = state.contact_forces[j] / contact.nodal_area(j);
+    TrilinosWrappers::MPI::Vector traction_field = body.make_vector();
+    contact.set_nodal_values(tractions, traction_field);
+
+    const bool changed = model.adapt(
+      [&](parallel::distributed::Triangulation<dim> &mesh) {
+        const bool flagged = adaptivity.mark(
+          mesh, body, solution_ghosted, contact, outcome.results);
+        if (flagged)
+          increment_solver.release();
+        return flagged;
+      },
+      {&state.u, &traction_field});
+    if (!changed)
+      return false;
+    state.contact_forces.resize(contact.n_local());
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      state.contact_forces[j] =
+        contact.nodal_value(j, traction_field) * contact.nodal_area(j);
+    model.assemble();
+    increment_solver.initialize(model);
+    pcout << "  mesh refinement " << cycle + 1 << ": "
+          << model.mesh().n_global_active_cells() << " cells, d = "
+          << body.n_free_dofs() << ", c = " << contact.n_candidates()
+          << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_increment(const unsigned int l)
+  {
+    const double t           = driver.times()[l];
+    const double load_factor = driver.loading().load_factor(t);
+    ContactOperator<dim> &contact = model.get_contact();
+    contact.move_obstacle(contact.obstacle_displacement(t));
+
+    IncrementOutcome<dim> outcome = solve_on_current_mesh(l);
+    for (unsigned int cycle = 0;
+         adaptivity.due(l + 1, cycle, model.get_body().n_free_dofs()) &&
+         adapt_mesh(outcome, cycle);
+         ++cycle)
+      outcome = solve_on_current_mesh(l);
 
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       state.contact_forces[j] = contact.to_cartesian(j, outcome.reactions[j]);

@@ -139,6 +139,18 @@ namespace FrictionalContact
                     area[cell->vertex_dof_index(v, 0)] += integral;
                 }
             }
+    // A hanging vertex is not a candidate: its force acts on the vertices it
+    // hangs from, and so does its area, with the same weights. Each
+    // candidate's area is then that of its shape function with the
+    // constraints applied, and r_n / area its pressure.
+    const AffineConstraints<double> &hanging = body.get_hanging_node_constraints();
+    for (auto &[dof, hanging_area] : area)
+      if (hanging.is_constrained(dof))
+        {
+          for (const auto &[parent, weight] : *hanging.get_constraint_entries(dof))
+            area[parent] += weight * hanging_area;
+          hanging_area = 0;
+        }
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto &face : cell->face_iterators())

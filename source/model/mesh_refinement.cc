@@ -154,7 +154,28 @@ namespace FrictionalContact
   MeshRefinement<dim>::conform_hanging_vertices(
     parallel::distributed::Triangulation<dim> &mesh)
   {
-    // Coarser cells first: a vertex a hanging vertex is averaged from may
+    place_hanging_vertices(mesh, false);
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::restore_hanging_vertices(
+    parallel::distributed::Triangulation<dim> &mesh)
+  {
+    place_hanging_vertices(mesh, true);
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::place_hanging_vertices(
+    parallel::distributed::Triangulation<dim> &mesh,
+    const bool                                 on_manifold)
+  {
+    // Coarser cells first: a vertex a hanging vertex is placed from may
     // itself hang from a coarser cell.
     std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
     for (const auto &cell : mesh.active_cell_iterators())
@@ -167,10 +188,12 @@ namespace FrictionalContact
     for (const auto &cell : cells)
       {
         // The midpoint of a refined edge of an active cell hangs (in 2D the
-        // edges are the faces).
+        // edges are the faces); refinement put it where the manifold says.
         for (unsigned int l = 0; l < cell->n_lines(); ++l)
           if (const auto line = cell->line(l); line->has_children())
-            line->child(0)->vertex(1) = 0.5 * (line->vertex(0) + line->vertex(1));
+            line->child(0)->vertex(1) =
+              on_manifold ? line->center(true) :
+                            0.5 * (line->vertex(0) + line->vertex(1));
         // In 3D, so does the centre of a refined face.
         if (dim == 3)
           for (const auto &face : cell->face_iterators())
@@ -179,7 +202,8 @@ namespace FrictionalContact
                 Point<dim> centre;
                 for (const unsigned int v : face->vertex_indices())
                   centre += 0.25 * face->vertex(v);
-                face->child(0)->vertex(3) = centre;
+                face->child(0)->vertex(3) =
+                  on_manifold ? face->center(true, true) : centre;
               }
       }
   }

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/solution_transfer.h>
 
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/model.h>
@@ -77,8 +78,57 @@ namespace FrictionalContact
       load_mesh(triangulation);
     else
       refinement->refine(triangulation, geometry->n_built_in_refinements());
-    MeshRefinement<dim>::conform_hanging_vertices(triangulation);
+    make_dofs_and_candidates();
+  }
 
+
+
+  template <int dim>
+  bool
+  Model<dim>::adapt(
+    const std::function<bool(parallel::distributed::Triangulation<dim> &)> &mark,
+    const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
+  {
+    if (!mark(triangulation))
+      return false;
+    using Vector = TrilinosWrappers::MPI::Vector;
+    std::vector<Vector>         ghosted(fields.size());
+    std::vector<const Vector *> old_fields;
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      {
+        ghosted[i] = body->make_ghosted_vector();
+        ghosted[i] = *fields[i];
+        old_fields.push_back(&ghosted[i]);
+      }
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(
+      body->get_dof_handler());
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(old_fields);
+    const Tensor<1, dim> obstacle = contact->obstacle_position();
+    MeshRefinement<dim>::restore_hanging_vertices(triangulation);
+    triangulation.execute_coarsening_and_refinement();
+
+    make_dofs_and_candidates();
+    if (contact->active())
+      contact->move_obstacle(obstacle);
+    std::vector<Vector *> new_fields(fields);
+    for (Vector *field : new_fields)
+      *field = body->make_vector();
+    transfer.interpolate(new_fields);
+    // Only the hanging nodes: the full constraints also hold the prescribed
+    // dofs, at zero, while a field such as u has their values there.
+    for (Vector *field : fields)
+      body->get_hanging_node_constraints().distribute(*field);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Model<dim>::make_dofs_and_candidates()
+  {
+    MeshRefinement<dim>::conform_hanging_vertices(triangulation);
     body->setup();
     // Every rank must own unknowns: the solvers' collective steps
     // (PARPACK, AMG set-up) do not work with an empty share.

@@ -2,6 +2,7 @@
 
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/solvers/primal_dual_solver.h>
+#include <frictional_contact/solvers/progress_rules.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -144,8 +145,7 @@ namespace FrictionalContact
     double beta = 1. / (alpha * std::pow(problem.largest_singular_value_T, 2));
 
     SolveStatistics result;
-    double          best_step     = std::numeric_limits<double>::max();
-    unsigned int    last_progress = 0;
+    StepLengthWatch watch(stagnation_window);
     bool            small_step_out_of_balance = false;
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
@@ -205,28 +205,24 @@ namespace FrictionalContact
                              "increments or Method = semismooth Newton";
             break;
           }
-        if (result.last_step < 0.99 * best_step)
-          {
-            best_step      = result.last_step;
-            last_progress = k;
-          }
-        if (result.last_step > 1e8 * best_step)
+        const StepLengthWatch::Verdict verdict = watch.record(k, result.last_step);
+        if (verdict == StepLengthWatch::Verdict::diverged)
           {
             result.failure = "divergence at iteration " + std::to_string(k + 1) +
                              ": the step grew to " +
                              Input::to_text(result.last_step) + " from " +
-                             Input::to_text(best_step) +
+                             Input::to_text(watch.best_step()) +
                              "; try smaller increments or Method = semismooth "
                              "Newton";
             break;
           }
-        if (k - last_progress > stagnation_window)
+        if (verdict == StepLengthWatch::Verdict::stagnated)
           {
             result.failure = "no progress from iteration " +
-                             std::to_string(last_progress + 1) + " to " +
-                             std::to_string(k + 1) + " (step " +
+                             std::to_string(watch.last_progress_iteration() + 1) +
+                             " to " + std::to_string(k + 1) + " (step " +
                              Input::to_text(result.last_step) + ", best " +
-                             Input::to_text(best_step) +
+                             Input::to_text(watch.best_step()) +
                              "); try Method = semismooth Newton or smaller "
                              "increments";
             break;

@@ -2,6 +2,7 @@
 
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/solvers/semismooth_newton_linearization.h>
+#include <frictional_contact/solvers/progress_rules.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
 #include <sstream>
@@ -88,35 +89,6 @@ namespace FrictionalContact
     }
 
 
-
-    /**
-     * Whether the merit still drops: the best value so far must fall by a
-     * tenth within 25 Newton steps.
-     */
-    struct ProgressMonitor
-    {
-      double       best_merit    = std::numeric_limits<double>::max();
-      unsigned int last_progress = 0;
-
-      void
-      restart(const unsigned int k)
-      {
-        best_merit    = std::numeric_limits<double>::max();
-        last_progress = k;
-      }
-
-      /// Records the merit of step @p k; true if it has stalled.
-      bool
-      stalled(const unsigned int k, const double merit)
-      {
-        if (merit < 0.9 * best_merit)
-          {
-            best_merit    = merit;
-            last_progress = k;
-          }
-        return k > last_progress + 25;
-      }
-    };
 
     /// Whether any candidate on any rank has a reaction (a warm start).
     template <int dim>
@@ -350,7 +322,7 @@ namespace FrictionalContact
     const NodeProjection<dim> P(contact, conditions);
     bool                      first     = true;
     double                    reduction = linear_reduction;
-    ProgressMonitor           progress;
+    MeritWatch                progress;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
@@ -426,11 +398,14 @@ namespace FrictionalContact
         if (progress.stalled(k, merit(t)))
           {
             result.failure = "no progress from Newton iteration " +
-                             std::to_string(progress.last_progress + 1) + " to " +
-                             std::to_string(k + 1) +
-                             " (the stick/slip sets keep changing); try "
-                             "smaller increments, Loading/On failure = cut "
-                             "increment, or Method = accelerated primal-dual";
+                             std::to_string(progress.last_progress_step() + 1) +
+                             " to " + std::to_string(k + 1) +
+                             " (the merit did not fall by a tenth in 25 "
+                             "steps: the stick/slip sets keep changing, or "
+                             "the residuals are at round-off and Tolerance is "
+                             "below it); try smaller increments, Loading/On "
+                             "failure = cut increment, or Method = accelerated "
+                             "primal-dual";
             break;
           }
         if (t < 1)

@@ -152,6 +152,19 @@ namespace FrictionalContact
 
 
 
+  void
+  ShiftedStiffnessSolver::release()
+  {
+    elastic_amg.preconditioner.clear();
+    shifted_amg.preconditioner.clear();
+    elastic_amg.sigma = -1;
+    shifted_amg.sigma = -1;
+    jacobi_sigma      = -1;
+    stiffness         = nullptr;
+  }
+
+
+
   bool
   ShiftedStiffnessSolver::use_jacobi(const double sigma) const
   {

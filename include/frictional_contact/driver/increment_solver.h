@@ -60,9 +60,21 @@ namespace FrictionalContact
     IncrementSolver(ParameterHandler         &prm,
                     const ConditionalOStream &pcout);
 
-    /// Builds the AMG of K and, with contact, sigma_T; prints the method.
+    /// Builds the AMG of K and, with contact, sigma_T (again after the
+    /// mesh changed; mu_pi is then computed anew when needed).
     void
     initialize(const Model<dim> &model);
+
+    /// Drops what refers to the current K, before the mesh changes.
+    void
+    release()
+    {
+      linear_solver.release();
+    }
+
+    /// Prints the contact method and sigma_T.
+    void
+    print_method() const;
 
     /**
      * Solves increment number @p increment (counted from 1, for messages)
@@ -130,5 +142,6 @@ namespace FrictionalContact
     ContactSolverParameters<dim> solver;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
+    bool                         contact_active = false;
   };
 } // namespace FrictionalContact

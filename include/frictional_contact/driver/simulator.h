@@ -7,6 +7,7 @@
 #include <frictional_contact/driver/checkpoint.h>
 #include <frictional_contact/driver/increment_driver.h>
 #include <frictional_contact/driver/increment_solver.h>
+#include <frictional_contact/model/adaptive_refinement.h>
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/postprocess/manager.h>
 
@@ -46,10 +47,22 @@ namespace FrictionalContact
     }
 
   private:
-    /// Solves increment @p l, adds it to the state and runs the
-    /// postprocessors; throws a SolverError if it fails.
+    /// Solves increment @p l (on meshes adapted to it, if asked), adds it
+    /// to the state and runs the postprocessors; throws a SolverError if it
+    /// fails.
     void
     solve_increment(const unsigned int l);
+
+    /// Solves increment @p l on the current mesh from the state; throws a
+    /// SolverError (after the postprocessors of a failed increment) if the
+    /// contact solve does not converge.
+    IncrementOutcome<dim>
+    solve_on_current_mesh(const unsigned int l);
+
+    /// Adapts the mesh to the solution in @p outcome and carries the state
+    /// over; returns whether the mesh changed (refinement cycle @p cycle).
+    bool
+    adapt_mesh(const IncrementOutcome<dim> &outcome, const unsigned int cycle);
 
     /// Writes a checkpoint after increment @p l.
     void
@@ -73,6 +86,7 @@ namespace FrictionalContact
     bool        resume;
 
     Model<dim>                   model;
+    AdaptiveRefinement<dim>      adaptivity;
     IncrementDriver              driver;
     IncrementSolver<dim>         increment_solver;
     Postprocess::Manager<dim>    postprocessors;

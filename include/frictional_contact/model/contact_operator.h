@@ -89,6 +89,13 @@ namespace FrictionalContact
       return obstacle->signed_distance(nodes[j].position - obstacle_shift);
     }
 
+    /// The obstacle's rigid displacement as move_obstacle() last set it.
+    const Tensor<1, dim> &
+    obstacle_position() const
+    {
+      return obstacle_shift;
+    }
+
     /// Number of candidates on this rank.
     unsigned int
     n_local() const override

@@ -127,6 +127,14 @@ namespace FrictionalContact
       return constraints;
     }
 
+    /// The hanging-node constraints alone (a hanging dof in terms of the
+    /// dofs it hangs from, whether those are fixed or not).
+    const AffineConstraints<double> &
+    get_hanging_node_constraints() const
+    {
+      return hanging_node_constraints;
+    }
+
     const TrilinosWrappers::SparseMatrix &
     stiffness_matrix() const
     {
@@ -204,7 +212,8 @@ namespace FrictionalContact
     std::array<IndexSet, dim> component_dofs;
 
     AffineConstraints<double>      constraints;
-    /// Only the hanging-node part of constraints (for support reactions).
+    /// Only the hanging-node part of constraints (for support reactions
+    /// and the candidates' areas).
     AffineConstraints<double>      hanging_node_constraints;
     /// Locally owned dofs of prescribed (not fixed) boundaries.
     IndexSet                       prescribed_dofs;

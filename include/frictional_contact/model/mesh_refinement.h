@@ -45,7 +45,23 @@ namespace FrictionalContact
     static void
     conform_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh);
 
+    /**
+     * Puts the hanging vertices back where refinement placed them, on the
+     * manifold: call before adapting a conformed mesh, so that the vertices
+     * refinement makes next are where they would be on a mesh refined in
+     * one go from the coarse one (as a checkpoint's mesh is when loaded),
+     * and a vertex that stops hanging is on the manifold.
+     */
+    static void
+    restore_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh);
+
   private:
+    /// The hanging vertices at the mean of their parents, or (@p
+    /// on_manifold) at the manifold's point between them.
+    static void
+    place_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh,
+                           const bool on_manifold);
+
     /// Throws an InputError if a mesh of @p n_cells cells would not fit in
     /// the memory of this machine.
     void

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace FrictionalContact
 {
@@ -43,6 +44,19 @@ namespace FrictionalContact
     void
     setup(const std::function<void(parallel::distributed::Triangulation<dim> &)>
             &load_mesh = {});
+
+    /**
+     * Adapts the mesh between solves: lets @p mark flag cells (it returns
+     * whether it flagged any, on any rank); if it did, refines and coarsens
+     * them, makes the dofs, constraints and candidates of the new mesh (the
+     * obstacle where it was) and carries the nodal @p fields (locally owned
+     * vectors of the old mesh) over, by interpolation. Call assemble()
+     * next. Returns whether the mesh changed.
+     */
+    bool
+    adapt(const std::function<bool(parallel::distributed::Triangulation<dim> &)>
+                                                 &mark,
+          const std::vector<TrilinosWrappers::MPI::Vector *> &fields);
 
     /// Assembles K and the loads; throws an InputError if the supports
     /// allow a rigid-body motion.
@@ -91,6 +105,11 @@ namespace FrictionalContact
     }
 
   private:
+    /// The dofs, constraints and contact candidates of the current mesh
+    /// (its hanging vertices conformed first).
+    void
+    make_dofs_and_candidates();
+
     // Made one after the other in the constructor: each needs the ones
     // before it (the boundary names need the coarse mesh).
     parallel::distributed::Triangulation<dim>    triangulation;

@@ -51,6 +51,11 @@ namespace FrictionalContact
                std::vector<std::vector<double>>      rigid_body_modes,
                const double                          smallest_eigenvalue_estimate = 0);
 
+    /// Drops the preconditioners and the reference to K, before K changes
+    /// (a new mesh); initialize() again before the next solve.
+    void
+    release();
+
     /**
      * Solves (K + sigma I) x = b until |b - (K + sigma I) x| <= tolerance,
      * starting from @p x. Returns the number of CG iterations. Throws a
