@@ -280,6 +280,11 @@ add_test(NAME hertz_2d_adaptive.same_on_two_ranks
     "Normal contact force" --tolerance 1e-8)
 set_tests_properties(hertz_2d_adaptive.same_on_two_ranks PROPERTIES
   FIXTURES_REQUIRED "hertz_2d_adaptive;hertz_2d_adaptive.mpirun=2")
+add_test(NAME hertz_2d_adaptive.vtu
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_files.py
+    --contains "${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_adaptive/output-hertz_2d_adaptive/solution/*.vtu"
+    "Name=\"displacement\"" "Name=\"contact_state\"" "Name=\"contact_pressure\"")
+set_tests_properties(hertz_2d_adaptive.vtu PROPERTIES FIXTURES_REQUIRED hertz_2d_adaptive)
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
 add_test(NAME restart_adaptive
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_adaptive.sh $<TARGET_FILE:contact>

@@ -4,11 +4,13 @@
 # once without interruption; run again, killed once an increment is in its
 # statistics, and resumed on 2 MPI ranks. The resumed run must end where
 # the uninterrupted one did: the same contact nodes (the same adapted mesh)
-# with the same displacements and reactions, and the same forces.
+# with the same displacements and reactions, and the same forces. The
+# stick zone of the uninterrupted run is checked against Mindlin's
+# (check_analytic.py cattaneo).
 # usage: restart_adaptive.sh <contact> <source dir> <python3>
 set -u
 if [ $# -ne 3 ]; then
-  sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
   [ "${1:-}" = "--help" ] && exit 0 || exit 2
 fi
 contact=$1; source_dir=$2; python=$3
@@ -37,6 +39,8 @@ printf "include killed.prm\nset Resume computation = true\n" > resume.prm
 
 "$contact" whole.prm > whole.log 2>&1 || { cat whole.log; fail "the uninterrupted run failed"; }
 grep -q "mesh refinement 1" whole.log || fail "the mesh was not adapted"
+"$python" "$source_dir/tests/check_analytic.py" cattaneo out-whole --rows 2-3 \
+  || fail "the stick zone on the adapted mesh is not Mindlin's"
 "$source_dir/tests/kill_when.sh" 1 out-killed/statistics killed.log "$contact" killed.prm \
   || fail "could not kill the run"
 mpirun -np 2 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }

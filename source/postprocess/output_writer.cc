@@ -245,11 +245,9 @@ namespace FrictionalContact
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
     const MPI_Comm         comm        = body.get_mpi_communicator();
     const auto &triangulation = dof_handler.get_triangulation();
-    if (scalar_dof_handler.n_dofs() == 0)
-      {
-        scalar_dof_handler.reinit(triangulation);
-        scalar_dof_handler.distribute_dofs(scalar_fe);
-      }
+    // Made anew for every output: adaptive refinement changes the mesh.
+    scalar_dof_handler.reinit(triangulation);
+    scalar_dof_handler.distribute_dofs(scalar_fe);
 
     Vector u_ghosted = body.make_ghosted_vector();
     u_ghosted        = u;
