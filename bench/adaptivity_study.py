@@ -27,7 +27,6 @@ minutes on 2 cores).
 """
 import argparse
 import csv
-import math
 import os
 import re
 import subprocess
@@ -41,39 +40,22 @@ import check_analytic  # noqa: E402
 COLUMNS = ["dim", "strategy", "setting", "cells", "d", "a", "a_hertz",
            "error_a", "p0", "p0_hertz", "error_p0", "total_s"]
 
-# (strategy, setting, lines of the parameter file) per dimension.
-SETTINGS = {
-    2: [("uniform", g, f"subsection Geometry\n  set Global refinements = {g}\n"
-         "  set Local refinements = 0\nend\n") for g in range(3, 9)] +
-       [("local", level, f"subsection Geometry\n  set Local refinements = {level}\nend\n")
-        for level in range(2, 8)] +
-       [("adaptive", c, "subsection Geometry\n  set Local refinements = 2\n"
-         "  set Refinement radius = 0.3\nend\nsubsection Mesh refinement\n"
-         "  set Strategy = kelly and contact state\n  set Refine fraction = 0.1\n"
-         f"  set Cycles = {c}\n  set Maximum dofs = 1e7\nend\n") for c in range(0, 9)],
-    3: [("uniform", g, f"subsection Geometry\n  set Global refinements = {g}\n"
-         "  set Local refinements = 0\nend\n") for g in range(2, 6)] +
-       [("local", level, f"subsection Geometry\n  set Local refinements = {level}\nend\n")
-        for level in range(2, 7)] +
-       [("adaptive", c, "subsection Geometry\n  set Local refinements = 2\n"
-         "  set Refinement radius = 0.3\nend\nsubsection Mesh refinement\n"
-         "  set Strategy = kelly and contact state\n  set Refine fraction = 0.1\n"
-         f"  set Cycles = {c}\n  set Maximum dofs = 1e7\nend\n") for c in range(0, 9)],
-}
+def settings(uniform, local, cycles):
+    """(strategy, setting, lines of the parameter file) of every run: the
+    global refinements of @p uniform, the local refinements of @p local and
+    the adaptive cycles of @p cycles."""
+    return ([("uniform", g, f"subsection Geometry\n  set Global refinements = {g}\n"
+              "  set Local refinements = 0\nend\n") for g in uniform] +
+            [("local", level, "subsection Geometry\n"
+              f"  set Local refinements = {level}\nend\n") for level in local] +
+            [("adaptive", c, "subsection Geometry\n  set Local refinements = 2\n"
+              "  set Refinement radius = 0.3\nend\nsubsection Mesh refinement\n"
+              "  set Strategy = kelly and contact state\n  set Refine fraction = 0.1\n"
+              f"  set Cycles = {c}\n  set Maximum dofs = 1e7\nend\n") for c in cycles])
 
 
-def hertz(scene):
-    """Contact radius and peak pressure of the last increment, and Hertz's."""
-    row = scene.rows[-1]
-    P, R, E = scene.normal_force(row), scene.radius, scene.E_star
-    if scene.dim == 2:
-        a_h = math.sqrt(4 * P * R / (math.pi * E))
-        p_h = 2 * P / (math.pi * a_h)
-    else:
-        a_h = (3 * P * R / (4 * E)) ** (1 / 3)
-        p_h = 3 * P / (2 * math.pi * a_h ** 2)
-    return (scene.radius_of_area(row["Contact area"]), a_h,
-            row["Max contact pressure"], p_h)
+SETTINGS = {2: settings(range(3, 9), range(2, 8), range(0, 9)),
+            3: settings(range(2, 6), range(2, 7), range(0, 9))}
 
 
 def run(contact, ranks, dim, strategy, setting, lines, folder):
@@ -93,7 +75,7 @@ def run(contact, ranks, dim, strategy, setting, lines, folder):
         sys.exit(f"{dim}D {strategy} {setting} failed:\n{done.stdout}{done.stderr}")
     meshes = re.findall(r"(\d+) cells[;,] d = (\d+)", done.stdout)
     cells, dofs = (int(x) for x in meshes[-1])
-    a, a_h, p0, p_h = hertz(check_analytic.Scene(folder + "/output"))
+    _, a, a_h, p0, p_h = check_analytic.hertz(check_analytic.Scene(folder + "/output"))
     return {"dim": dim, "strategy": strategy, "setting": setting,
             "cells": cells, "d": dofs, "a": a, "a_hertz": a_h,
             "error_a": abs(a - a_h) / a_h, "p0": p0, "p0_hertz": p_h,

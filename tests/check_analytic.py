@@ -100,7 +100,9 @@ class Scene:
         return distances[len(distances) // 2]
 
 
-def check_hertz(scene, args):
+def hertz(scene):
+    """The last increment's total normal force P, contact radius (half-width
+    in 2D) and peak pressure, and Hertz's radius and peak pressure for P."""
     row = scene.rows[-1]
     P, R, E = scene.normal_force(row), scene.radius, scene.E_star
     a = scene.radius_of_area(row["Contact area"])
@@ -111,6 +113,11 @@ def check_hertz(scene, args):
     else:
         a_hertz = (3 * P * R / (4 * E)) ** (1 / 3)
         p_hertz = 3 * P / (2 * math.pi * a_hertz ** 2)
+    return P, a, a_hertz, p0, p_hertz
+
+
+def check_hertz(scene, args):
+    P, a, a_hertz, p0, p_hertz = hertz(scene)
     error_a = abs(a - a_hertz) / a_hertz
     error_p = abs(p0 - p_hertz) / p_hertz
     ok = error_a <= args.radius_tolerance and error_p <= args.pressure_tolerance
