@@ -28,7 +28,8 @@ COLUMNS = ["example", "N_Y", "mu", "ranks", "solver", "d", "c", "iterations",
            "cg_iterations", "amg_setups", "setup_s", "eigenvalue_s", "solve_s",
            "total_s", "peak_memory_mb", "force_balance", "complementarity",
            "penetration", "free_percent", "stick_percent", "slip_percent",
-           "elastic_solve_s", "ratio_to_elastic", "converged"]
+           "elastic_solve_s", "ratio_to_elastic", "converged", "amg_setup_s",
+           "krylov_s", "contact_operations_s", "output_s"]
 
 
 def scene(example, n_y, mu, solver, contact=True):
@@ -126,12 +127,20 @@ def parse(output):
     if match:
         values.update(iterations=0, cg_iterations=match.group(1))
     summary = re.search(r"-- summary:(.*)", output)
-    sections = dict(re.findall(r" ([A-Za-z ]+?) = ([0-9.e+-]+) s;", summary.group(1))) if summary else {}
+    sections = dict(re.findall(r" ([A-Za-z -]+?) = ([0-9.e+-]+) s;", summary.group(1))) if summary else {}
     seconds = {k: float(v) for k, v in sections.items()}
     values["setup_s"] = seconds.get("Setup", 0) + seconds.get("Assembly", 0)
     values["eigenvalue_s"] = seconds.get("Smallest eigenvalue of K", 0)
     values["solve_s"] = (seconds.get("Contact solve", 0) + seconds.get("Elastic solve", 0)
                          + values["eigenvalue_s"])
+    # The time split of the solves: AMG set-ups, Krylov solves (AMG
+    # applications included), and the rest, the contact operations.
+    values["amg_setup_s"] = seconds.get("AMG set-up", "")
+    values["krylov_s"] = seconds.get("Krylov solves", "")
+    if summary and "Krylov solves" in seconds:
+        values["contact_operations_s"] = round(
+            values["solve_s"] - seconds["AMG set-up"] - seconds["Krylov solves"], 4)
+    values["output_s"] = seconds.get("Output", 0)
     match = re.search(r"peak memory = ([0-9.]+) MB", output)
     values["peak_memory_mb"] = float(match.group(1)) if match else ""
     return values

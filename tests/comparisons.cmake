@@ -273,7 +273,7 @@ endforeach()
 add_test(NAME example1_history.columns
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_files.py
     --contains "${CMAKE_CURRENT_BINARY_DIR}/example1_history/output-*/history-00001.txt"
-    "# iteration seconds force_balance complementarity penetration step linear_iterations")
+    "# iteration seconds force_balance complementarity penetration step linear_iterations active_set_changes forcing_term")
 set_tests_properties(example1_history.columns PROPERTIES FIXTURES_REQUIRED example1_history)
 
 # Adaptive refinement (issue 17): VTU files of the adapted mesh, and a run

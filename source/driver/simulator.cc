@@ -286,6 +286,12 @@ namespace FrictionalContact
          timer->get_summary_data(TimerOutput::total_wall_time))
       pcout << ' ' << section << " = "
             << Utilities::MPI::max(seconds, mpi_communicator) << " s;";
+    const ShiftedStiffnessSolver &linear = increment_solver.get_linear_solver();
+    pcout << " (within the solves: AMG set-up = "
+          << Utilities::MPI::max(linear.amg_setup_seconds, mpi_communicator)
+          << " s; Krylov solves = "
+          << Utilities::MPI::max(linear.krylov_seconds, mpi_communicator)
+          << " s;)";
     pcout << " peak memory = "
           << Utilities::MPI::max(memory.VmHWM, mpi_communicator) / 1024.
           << " MB per rank (largest)" << std::endl;

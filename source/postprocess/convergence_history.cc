@@ -22,8 +22,10 @@ namespace FrictionalContact
                           Patterns::Bool(),
                           "Write history-NNNNN.txt for each increment: one "
                           "row per iteration of the contact solver with the "
-                          "wall time, the three residuals, |du_k+1 - du_k| "
-                          "and the Krylov iterations (see "
+                          "wall time, the three residuals, |du_k+1 - du_k|, "
+                          "the Krylov iterations, and for the Newton method "
+                          "the candidates that changed their free/stick/slip "
+                          "condition and the forcing term (see "
                           "scripts/plot_history.py).");
       }
 
@@ -62,14 +64,16 @@ namespace FrictionalContact
                << " (t = " << result.time << "): one row per iteration of "
                << "the contact solver.\n"
                << "# iteration seconds force_balance complementarity "
-                  "penetration step linear_iterations\n"
+                  "penetration step linear_iterations active_set_changes "
+                  "forcing_term\n"
                << std::setprecision(9);
           for (const HistoryRow &row : history)
             text << row.iteration << ' ' << row.seconds << ' '
                  << row.residuals.force_balance << ' '
                  << row.residuals.complementarity << ' '
                  << row.residuals.penetration << ' ' << row.step << ' '
-                 << row.linear_iterations << '\n';
+                 << row.linear_iterations << ' ' << row.active_set_changes
+                 << ' ' << row.forcing_term << '\n';
           std::ostringstream name;
           name << directory << "/history-" << std::setw(5) << std::setfill('0')
                << result.increment << ".txt";

@@ -49,8 +49,11 @@ namespace FrictionalContact
            << std::setprecision(3) << std::scientific << row.step
            << ", residuals " << row.residuals.force_balance << ' '
            << row.residuals.complementarity << ' ' << row.residuals.penetration
-           << ", " << row.linear_iterations << " Krylov iterations" << std::defaultfloat
-           << std::endl;
+           << ", " << row.linear_iterations << " Krylov iterations";
+    if (row.forcing_term > 0)
+      *pcout << " (forcing term " << row.forcing_term << "), "
+             << row.active_set_changes << " set changes";
+    *pcout << std::defaultfloat << std::endl;
   }
 
   template class ContactSolver<2>;

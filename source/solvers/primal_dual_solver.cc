@@ -192,7 +192,9 @@ namespace FrictionalContact
                              timer.wall_time(),
                              result.residuals,
                              result.last_step,
-                             cg_iterations};
+                             cg_iterations,
+                             0,
+                             0.};
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);

@@ -97,7 +97,11 @@ namespace FrictionalContact
     prm.declare_entry("AMG smoother sweeps",
                       "2",
                       Patterns::Integer(1),
-                      "Chebyshev smoother sweeps of the AMG (>= 1).");
+                      "Smoother sweeps on each level of the AMG (>= 1).");
+    prm.declare_entry("AMG smoother type",
+                      "Chebyshev",
+                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
+                      "The smoother on each level of the AMG.");
     prm.declare_entry("AMG near null space",
                       "rigid body modes",
                       Patterns::Selection("rigid body modes|translations"),
@@ -122,6 +126,7 @@ namespace FrictionalContact
     jacobi_threshold      = prm.get_double("Jacobi threshold");
     rebuild_factor        = prm.get_double("AMG rebuild factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    smoother_type         = prm.get("AMG smoother type");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     translations_only = prm.get("AMG near null space") == "translations";
     prm.leave_subsection();
@@ -217,6 +222,7 @@ namespace FrictionalContact
     data.elliptic              = true;
     data.higher_order_elements = false;
     data.smoother_sweeps       = smoother_sweeps;
+    data.smoother_type         = smoother_type.c_str();
     data.aggregation_threshold = aggregation_threshold;
 
     Teuchos::ParameterList              parameters;
@@ -289,13 +295,17 @@ namespace FrictionalContact
           {
             build_jacobi(sigma);
             last_preconditioner = "Jacobi";
+            const Timer timer;
             cg.solve(op, x, b, DiagonalPreconditioner(inverse_diagonal));
+            krylov_seconds += timer.wall_time();
           }
         else
           {
             const auto &amg     = amg_for(sigma);
             last_preconditioner = "AMG";
+            const Timer timer;
             cg.solve(op, x, b, amg);
+            krylov_seconds += timer.wall_time();
           }
       }
     catch (const SolverControl::NoConvergence &e)

@@ -100,6 +100,13 @@ namespace FrictionalContact
       return solver.method->iteration_name();
     }
 
+    /// The solver of the linear systems with K, and its time counters.
+    const ShiftedStiffnessSolver &
+    get_linear_solver() const
+    {
+      return linear_solver;
+    }
+
     /// The preconditioner of the last linear solve ("AMG", "Jacobi").
     const std::string &
     last_preconditioner() const

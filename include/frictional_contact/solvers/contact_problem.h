@@ -94,6 +94,12 @@ namespace FrictionalContact
     double       step;
     /// Krylov (CG or GMRES) iterations of the iteration's linear solves.
     unsigned int linear_iterations;
+    /// Candidates whose free/stick/slip condition changed (Newton; 0 for
+    /// Algorithm 2, which has no active sets).
+    unsigned int active_set_changes;
+    /// The factor the Krylov solver reduced its residual by (Newton's
+    /// forcing term; 0 for Algorithm 2).
+    double forcing_term;
   };
 
   /// What a contact solve reports, whatever the method.

@@ -171,11 +171,11 @@ namespace FrictionalContact
     /**
      * Sorts the nodes by the augmented reactions of (du, r): free where the
      * augmented normal reaction sigma_j is not positive, stick inside the
-     * friction bound, slip on it. Returns whether a node of this rank
-     * changed its condition.
+     * friction bound, slip on it. Returns how many nodes of this rank
+     * changed their condition.
      */
     template <int dim>
-    bool
+    unsigned int
     classify(const IncrementalProblem<dim>     &problem,
              const Vector                      &du,
              const std::vector<Tensor<1, dim>> &r,
@@ -184,7 +184,7 @@ namespace FrictionalContact
              ActiveSets<dim>                   &sets)
     {
       const unsigned int n       = c.size();
-      bool               changed = false;
+      unsigned int       changes = 0;
     for (unsigned int j = 0; j < n; ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
@@ -210,7 +210,8 @@ namespace FrictionalContact
                                   1e3 * c[j]) :
                          0.;
           }
-        changed = changed || sets.conditions[j] != before;
+        if (sets.conditions[j] != before)
+          ++changes;
         // Anti-cycling: stick <-> slip, or a reversed slip direction.
         const bool flipped =
           before != NodeCondition::none &&
@@ -224,7 +225,7 @@ namespace FrictionalContact
             sets.flips[j] = 0;
           }
       }
-      return changed;
+      return changes;
     }
 
 

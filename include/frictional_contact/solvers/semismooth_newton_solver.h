@@ -1,6 +1,7 @@
 #pragma once
 
 #include <frictional_contact/solvers/contact_solver.h>
+#include <frictional_contact/solvers/forcing_term.h>
 
 namespace FrictionalContact
 {
@@ -19,7 +20,7 @@ namespace FrictionalContact
    * The constraints are imposed by projection inside CG (GMRES(50) when a
    * node slips, since the coupling makes the system non-symmetric),
    * preconditioned with the AMG of K (or Jacobi, as <Linear solver/
-   * Preconditioner> says), built once. A line search on the
+   * Preconditioner> says), built once, to the accuracy of a ForcingTerm. A line search on the
    * complementarity functions and the force balance keeps the sets from
    * cycling. c_j is the normal stiffness of node j, t_n,j^T K t_n,j: the
    * method does not depend on the units. The reactions are the residual
@@ -55,7 +56,8 @@ namespace FrictionalContact
           const bool                     record_history) const override;
 
   private:
-    double       linear_reduction;
-    double       tangential_factor;
+    double            linear_reduction;
+    ForcingTerm::Rule forcing_rule;
+    double            tangential_factor;
   };
 } // namespace FrictionalContact

@@ -95,6 +95,10 @@ namespace FrictionalContact
     /// How many times the AMG was set up, and the seconds it took.
     unsigned int n_amg_setups = 0;
     double       amg_setup_seconds = 0;
+    /// Wall seconds in Krylov solves with K (the preconditioner's
+    /// applications included, its set-ups not): the elastic solves, the
+    /// primal steps and the Newton systems.
+    double krylov_seconds = 0;
 
     /// The preconditioner of the last solve: "AMG" or "Jacobi".
     std::string last_preconditioner;
@@ -125,6 +129,7 @@ namespace FrictionalContact
     double       jacobi_threshold;
     double       rebuild_factor;
     unsigned int smoother_sweeps;
+    std::string  smoother_type;
     double       aggregation_threshold;
     bool         translations_only;
 

@@ -1,0 +1,87 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace FrictionalContact
+{
+  /**
+   * The forcing term eta_k of an inexact Newton method: the factor by which
+   * the Krylov solver reduces the residual of the k-th Newton system. Owns
+   * eta and the nonlinear residual norm of the last iterate.
+   *
+   * - fixed: eta = the largest forcing term, ten times smaller after a step
+   *   the line search had to shorten, ten times larger again (up to the
+   *   largest) after a full step.
+   * - Eisenstat-Walker (1996, their choice 2, gamma = 0.9, alpha = 2):
+   *   eta_k = gamma (|F_k| / |F_k-1|)^alpha, safeguarded by gamma
+   *   eta_k-1^alpha when that exceeds 0.1, so that eta does not fall
+   *   faster than the convergence can follow, and kept within [1e-8, the
+   *   largest forcing term]. As in the fixed rule, a shortened step makes
+   *   eta ten times smaller (the direction was poor), and a full step makes
+   *   it at most ten times larger.
+   */
+  class ForcingTerm
+  {
+  public:
+    enum class Rule
+    {
+      fixed,
+      eisenstat_walker
+    };
+
+    ForcingTerm(const Rule rule, const double largest)
+      : rule(rule)
+      , largest(largest)
+      , eta(largest)
+    {}
+
+    /// The rule named as in <Contact solver/Semismooth Newton/Forcing term>.
+    static Rule
+    rule_from_name(const std::string &name)
+    {
+      return name == "Eisenstat-Walker" ? Rule::eisenstat_walker : Rule::fixed;
+    }
+
+    /// The forcing term of the next Newton system.
+    double
+    current() const
+    {
+      return eta;
+    }
+
+    /**
+     * Records an accepted step: @p norm is the nonlinear residual norm at
+     * the new iterate, @p previous_norm at the one before, @p full_step
+     * whether the line search took the whole step.
+     */
+    void
+    record(const double previous_norm, const double norm, const bool full_step)
+    {
+      const double relaxed = std::min(10 * eta, largest);
+      if (!full_step)
+        eta = 0.1 * eta;
+      else if (rule == Rule::fixed || !(previous_norm > 0) ||
+               !std::isfinite(norm))
+        eta = relaxed;
+      else
+        {
+          const double ratio     = norm / previous_norm;
+          const double safeguard = gamma * eta * eta;
+          double       choice    = gamma * ratio * ratio;
+          if (safeguard > 0.1)
+            choice = std::max(choice, safeguard);
+          eta = std::min(choice, relaxed);
+        }
+      eta = std::max(eta, smallest);
+    }
+
+  private:
+    static constexpr double gamma    = 0.9;
+    static constexpr double smallest = 1e-8;
+    Rule                    rule;
+    double                  largest;
+    double                  eta;
+  };
+} // namespace FrictionalContact
