@@ -3,8 +3,7 @@
 // sequences: the fixed rule tightens ten times after a shortened step and
 // relaxes again after full steps; Eisenstat-Walker's choice 2 follows the
 // square of the residual ratio, is held up by its safeguard while it is
-// large, tightens after a shortened step and relaxes by at most ten times
-// a step, never exceeds the largest forcing term and never falls below 1e-8.
+// large, is ten times smaller after a shortened step, never exceeds the largest forcing term and never falls below 1e-8.
 #include <frictional_contact/solvers/forcing_term.h>
 
 #include <iostream>
@@ -83,9 +82,9 @@ main()
          0.5,
          1.,
          {{0.9, false}, {0.8, true}});
-  // After shortened steps, full ones relax eta ten times per step only,
-  // however close to 1 the residual ratio is.
-  follow("Eisenstat-Walker, relaxing after shortened steps",
+  // Each shortened step gives a tenth of what its ratio asks for; the next
+  // full step what its ratio asks for.
+  follow("Eisenstat-Walker, shortened steps",
          Rule::eisenstat_walker,
          0.5,
          1.,
