@@ -14,33 +14,15 @@ Run from the top of the repository after scripts/setup.sh.
 import argparse
 import csv
 import os
-import re
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_series import parse, run, scene  # noqa: E402
+from run_series import best_run, scene  # noqa: E402
 
 COLUMNS = ["N_Y", "ranks", "d", "iterations", "krylov_iterations", "setup_s",
            "amg_setup_s", "krylov_s", "contact_operations_s", "solve_s",
            "output_s", "elastic_solve_s", "ratio_to_elastic", "speed_up",
            "peak_memory_mb", "converged"]
-
-
-def best_run(text, ranks, repeat, contact):
-    """The parsed values of the run with the smallest solve time."""
-    best = None
-    for _ in range(repeat):
-        with tempfile.TemporaryDirectory() as folder:
-            code, output, _ = run(text, ranks, folder, contact)
-        values = parse(output)
-        match = re.search(r"Elastic solve = ([0-9.e+-]+) s", output)
-        values["elastic_s"] = float(match.group(1)) if match else 0.
-        values["converged"] = int(code == 0)
-        key = values["solve_s"]
-        if best is None or key < best["solve_s"]:
-            best = values
-    return best
 
 
 def main():
@@ -65,12 +47,13 @@ def main():
             contact_scene = scene(2, n_y, 0.5, "semismooth Newton")
             if args.vtu:
                 contact_scene += "subsection Output\n set Write vtu = true\nend\n"
-            elastic = best_run(scene(2, n_y, 0.5, None, False), ranks,
-                               args.repeat, args.contact)
-            values = best_run(contact_scene, ranks, args.repeat, args.contact)
+            _, elastic, _ = best_run(scene(2, n_y, 0.5, None, False), ranks,
+                                     args.repeat, args.contact)
+            code, values, _ = best_run(contact_scene, ranks, args.repeat,
+                                       args.contact)
             if one_rank is None:
                 one_rank = values["solve_s"]
-            row = dict(values, N_Y=n_y, ranks=ranks,
+            row = dict(values, N_Y=n_y, ranks=ranks, converged=int(code == 0),
                        krylov_iterations=values.get("cg_iterations", ""),
                        elastic_solve_s=elastic["elastic_s"],
                        ratio_to_elastic=round(values["solve_s"] / elastic["elastic_s"], 2),

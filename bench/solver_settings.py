@@ -19,12 +19,10 @@ Run from the top of the repository after scripts/setup.sh.
 import argparse
 import csv
 import os
-import re
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_series import parse, run, scene  # noqa: E402
+from run_series import best_run, scene  # noqa: E402
 
 NEWTON = "subsection Contact solver\n subsection Semismooth Newton\n{}\n end\nend\n"
 LINEAR = "subsection Linear solver\n{}\nend\n"
@@ -48,24 +46,6 @@ VARIANTS = {
 COLUMNS = ["N_Y", "mu", "ranks", "variant", "d", "iterations", "krylov_iterations",
            "amg_setups", "elastic_solve_s", "solve_s", "ratio_to_elastic",
            "peak_memory_mb", "bytes_per_unknown", "converged"]
-
-
-def best_of(text, repeat, ranks, contact, with_contact):
-    """The run with the smallest solve time of @p repeat runs: (exit code,
-    parsed values, output)."""
-    best = None
-    for _ in range(repeat):
-        with tempfile.TemporaryDirectory() as folder:
-            code, output, _ = run(text, ranks, folder, contact)
-        values = parse(output)
-        match = re.search(r"Elastic solve = ([0-9.e+-]+) s", output)
-        values["elastic_s"] = float(match.group(1)) if match else float("inf")
-        key = values["solve_s"] if with_contact else values["elastic_s"]
-        if code != 0:
-            return code, values, output
-        if best is None or key < best[0]:
-            best = (key, code, values, output)
-    return best[1], best[2], best[3]
 
 
 def main():
@@ -93,11 +73,11 @@ def main():
             linear = "\n".join(p[1] for p in parts if p[1])
             extra = (NEWTON.format(newton) if newton else "") + \
                 (LINEAR.format(linear) if linear else "")
-            _, elastic, _ = best_of(scene(2, n_y, args.mu, None, False) + extra,
-                                    args.repeat, args.ranks, args.contact, False)
-            code, values, output = best_of(
+            _, elastic, _ = best_run(scene(2, n_y, args.mu, None, False) + extra,
+                                     args.ranks, args.repeat, args.contact)
+            code, values, output = best_run(
                 scene(2, n_y, args.mu, "semismooth Newton") + extra,
-                args.repeat, args.ranks, args.contact, True)
+                args.ranks, args.repeat, args.contact)
             if code != 0:
                 print(output[-2000:])
             row = dict(N_Y=n_y, mu=args.mu, ranks=args.ranks, variant=name,

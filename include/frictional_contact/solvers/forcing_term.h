@@ -9,7 +9,7 @@ namespace FrictionalContact
   /**
    * The forcing term eta_k of an inexact Newton method: the factor by which
    * the Krylov solver reduces the residual of the k-th Newton system. Owns
-   * eta and the nonlinear residual norm of the last iterate.
+   * eta; the caller gives the nonlinear residual norms of each step.
    *
    * - fixed: eta = the largest forcing term, ten times smaller after a step
    *   the line search had to shorten, ten times larger again (up to the

@@ -20,12 +20,13 @@ namespace FrictionalContact
    * The constraints are imposed by projection inside CG (GMRES(50) when a
    * node slips, since the coupling makes the system non-symmetric),
    * preconditioned with the AMG of K (or Jacobi, as <Linear solver/
-   * Preconditioner> says), built once, to the accuracy of a ForcingTerm. A line search on the
-   * complementarity functions and the force balance keeps the sets from
-   * cycling. c_j is the normal stiffness of node j, t_n,j^T K t_n,j: the
-   * method does not depend on the units. The reactions are the residual
-   * K du - p at the active nodes. It needs a ContactMap whose T_j are
-   * orthonormal on disjoint entries (one node each).
+   * Preconditioner> says), built once, to the accuracy of a ForcingTerm.
+   * A line search on the complementarity functions and the force balance
+   * keeps the sets from cycling. c_j is the normal stiffness of node j,
+   * t_n,j^T K t_n,j: the method does not depend on the units. The
+   * reactions are the residual K du - p at the active nodes. It needs a
+   * ContactMap whose T_j are orthonormal on disjoint entries (one node
+   * each).
    */
   template <int dim>
   class SemismoothNewtonSolver : public ContactSolver<dim>
