@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The Newton solver and ML under different settings, measured on the same
 scenes: the forcing term of the inexact Newton method and ML's smoother,
-sweeps, aggregation threshold and near null space.
+sweeps, aggregation threshold, prolongator damping and near null space.
 
 For each instance (example II at --sizes, friction --mu) and each variant,
 runs the elastic scene (no contact: the unit, with the variant's ML
@@ -42,6 +42,8 @@ VARIANTS = {
     "threshold 0.08": ("", " set AMG aggregation threshold = 0.08"),
     "translations": ("", " set AMG near null space = translations"),
     "Gauss-Seidel": ("", " set AMG smoother type = symmetric Gauss-Seidel"),
+    "damping 0": ("", " set AMG prolongator damping = 0"),
+    "damping 0.67": ("", " set AMG prolongator damping = 0.67"),
 }
 COLUMNS = ["N_Y", "mu", "ranks", "variant", "d", "iterations", "krylov_iterations",
            "amg_setups", "elastic_solve_s", "solve_s", "ratio_to_elastic",

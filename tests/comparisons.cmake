@@ -118,6 +118,11 @@ contact_compare_tables(example2_newton.reference_contact example2_newton
 contact_compare_tables(example2_newton.same_as_algorithm_2 "example2_newton;example2_ny4"
   ${_out2}/displacement-00001.csv ${_newton2}/displacement-00001.csv
   --keys x,y,z --columns ux,uy,uz)
+contact_compare_tables(example2_ny8_plain_aggregation.same_as_smoothed
+  "example2_ny8_newton;example2_ny8_plain_aggregation"
+  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny8_newton/output-example2_ny8_newton/displacement-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny8_plain_aggregation/output-example2_ny8_plain_aggregation/displacement-00001.csv
+  --keys x,y,z --columns ux,uy,uz --tolerance 1e-8)
 contact_compare_tables(example2_newton.one_vs_two_ranks "example2_newton;example2_newton.mpirun=2"
   ${_newton2}/contact-00001.csv ${_newton2p}/contact-00001.csv
   --keys x,y --columns ux,uy,uz,rn,rt1,rt2 --states state)
@@ -165,7 +170,8 @@ contact_compare_tables(extreme_stiff_newton.same_displacement
 # pressure, Cattaneo-Mindlin's stick zone, the sliding block's T = mu N.
 # The adaptive Hertz scenes are held to 1 percent (2D) and 2 percent (3D).
 foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
-              cattaneo_3d:cattaneo sliding_block:sliding
+              cattaneo_3d:cattaneo cattaneo_3d_eisenstat_walker:cattaneo
+              sliding_block:sliding
               "hertz_2d_adaptive:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.01"
               "hertz_3d_adaptive.mpirun=2:hertz:--radius-tolerance:0.02:--pressure-tolerance:0.02")
   string(REPLACE ":" ";" _case ${_case})

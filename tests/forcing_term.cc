@@ -3,7 +3,9 @@
 // sequences: the fixed rule tightens ten times after a shortened step and
 // relaxes again after full steps; Eisenstat-Walker's choice 2 follows the
 // square of the residual ratio, is held up by its safeguard while it is
-// large, is ten times smaller after a shortened step, never exceeds the largest forcing term and never falls below 1e-8.
+// large, is ten times smaller after a shortened step, never exceeds the
+// largest forcing term and never falls below 1e-8; falling back gives the
+// fixed rule with a tenth of the largest term.
 #include <frictional_contact/solvers/forcing_term.h>
 
 #include <iostream>
@@ -18,6 +20,7 @@ namespace
   {
     double residual;
     bool   full;
+    bool   then_fall_back = false;
   };
 
   /// Prints the forcing term before each step and after the last.
@@ -35,6 +38,8 @@ namespace
       {
         std::cout << ' ' << forcing.current();
         forcing.record(previous, step.residual, step.full);
+        if (step.then_fall_back)
+          forcing.fall_back();
         previous = step.residual;
       }
     std::cout << ' ' << forcing.current() << std::endl;
@@ -95,6 +100,20 @@ main()
          0.5,
          1.,
          {{1e-6, true}, {1e-14, true}});
+  // Falling back after the first step: the fixed rule with a tenth of the
+  // largest term, 0.05, ten times smaller after a shortened step, never
+  // above 0.05 again. The fixed rule does not fall back further.
+  follow("Eisenstat-Walker, falling back",
+         Rule::eisenstat_walker,
+         0.5,
+         1.,
+         {{0.9, true, true}, {0.1, true}, {0.09, false}, {0.05, true},
+          {0.04, true}});
+  follow("fixed, falling back",
+         Rule::fixed,
+         1e-2,
+         1.,
+         {{0.9, true, true}, {0.5, true}});
   std::cout << "rule from name: "
             << (ForcingTerm::rule_from_name("Eisenstat-Walker") ==
                 Rule::eisenstat_walker)

@@ -94,9 +94,10 @@ namespace FrictionalContact
     if (available > 0 && needed > 0.8 * available)
       throw InputError("<Geometry>: the mesh would have " +
                        Input::to_text(n_cells) + " cells and need about " +
-                       Input::to_text(needed / 1e9) + " GB, but " +
+                       Input::to_text(needed / 1e9) +
+                       " GB, more than 80 % of the " +
                        Input::to_text(available / 1e9) +
-                       " GB are available; use fewer cells (repetitions, "
+                       " GB available; use fewer cells (repetitions, "
                        "Global refinements, Local refinements)");
   }
 

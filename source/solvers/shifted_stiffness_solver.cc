@@ -112,6 +112,14 @@ namespace FrictionalContact
                       "1e-4",
                       Patterns::Double(0., 1.),
                       "ML's aggregation drop tolerance, in [0, 1].");
+    prm.declare_entry("AMG prolongator damping",
+                      "1.333",
+                      Patterns::Double(0., 2.),
+                      "ML's damping factor of the prolongator smoothing "
+                      "(smoothed aggregation, 4/3 by default). 0: plain "
+                      "aggregation, which needs far less memory for the "
+                      "coarse levels but more Krylov iterations "
+                      "(doc/performance.md).");
     prm.leave_subsection();
   }
 
@@ -128,6 +136,7 @@ namespace FrictionalContact
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother_type         = prm.get("AMG smoother type");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    prolongator_damping   = prm.get_double("AMG prolongator damping");
     translations_only = prm.get("AMG near null space") == "translations";
     prm.leave_subsection();
   }
@@ -238,6 +247,7 @@ namespace FrictionalContact
       for (unsigned int row = 0; row < modes[m].size(); ++row)
         null_space[m][row] = modes[m][row];
     parameters.set("PDE equations", dim);
+    parameters.set("aggregation: damping factor", prolongator_damping);
     parameters.set("null space: type", "pre-computed");
     parameters.set("null space: dimension", static_cast<int>(n_modes));
     parameters.set("null space: vectors", null_space.Values());

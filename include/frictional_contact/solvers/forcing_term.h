@@ -22,7 +22,10 @@ namespace FrictionalContact
    *   search shortened (the direction was poor). (Limiting its growth to
    *   ten times a step, as in the fixed rule, cost example II 40 % more
    *   Krylov iterations and did not prevent the stall of cattaneo_3d:
-   *   doc/performance.md.)
+   *   doc/performance.md.) When the caller sees no progress for a few
+   *   steps, it calls fall_back(): from then on the fixed rule, ten times
+   *   tighter, since loose directions can keep moving stick/slip fronts
+   *   changing without end.
    */
   class ForcingTerm
   {
@@ -75,6 +78,21 @@ namespace FrictionalContact
             eta *= 0.1;
         }
       eta = std::max(eta, smallest);
+    }
+
+    /**
+     * Gives up the Eisenstat-Walker rule for the rest of the solve: the
+     * fixed rule with a ten times smaller largest forcing term. Called when
+     * the nonlinear iteration has made no progress for some steps.
+     */
+    void
+    fall_back()
+    {
+      if (rule == Rule::fixed)
+        return;
+      rule    = Rule::fixed;
+      largest = 0.1 * largest;
+      eta     = std::min(eta, largest);
     }
 
   private:

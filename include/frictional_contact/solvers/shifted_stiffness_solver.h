@@ -131,6 +131,7 @@ namespace FrictionalContact
     unsigned int smoother_sweeps;
     std::string  smoother_type;
     double       aggregation_threshold;
+    double       prolongator_damping;
     bool         translations_only;
 
     const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
