@@ -24,8 +24,9 @@ namespace FrictionalContact
    *   i.e. max diag(K) <= "Jacobi threshold" * sigma: ML's aggregation
    *   breaks down on such near-identity matrices, and CG needs few
    *   iterations anyway;
-   * - otherwise Trilinos ML (smoothed aggregation with the rigid-body modes
-   *   as near null space) built on K + sigma_ref I, reused while sigma stays
+   * - otherwise Trilinos ML (smoothed aggregation, or plain aggregation
+   *   with "AMG prolongator damping" = 0, with the rigid-body modes as near
+   *   null space) built on K + sigma_ref I, reused while sigma stays
    *   within a factor "AMG rebuild factor" of sigma_ref (or both are below
    *   the stiffness scale, where the shift does not matter). The AMG of the
    *   plain elastic problem (sigma = 0) is kept separately.
