@@ -78,6 +78,8 @@ namespace FrictionalContact
     // Measured: about 3 kB per cell in 2D and 14 kB in 3D (matrix, AMG,
     // vectors, mesh), on top of some 170 MB for the libraries.
     const double needed    = n_cells * (dim == 2 ? 3e3 : 1.4e4);
+    // The share of the available memory a run may plan to use.
+    const double largest_share = 0.8;
     double       available = 0;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
@@ -91,11 +93,12 @@ namespace FrictionalContact
             meminfo.ignore(1000, '\n');
       }
     available = Utilities::MPI::broadcast(comm, available, 0);
-    if (available > 0 && needed > 0.8 * available)
+    if (available > 0 && needed > largest_share * available)
       throw InputError("<Geometry>: the mesh would have " +
                        Input::to_text(n_cells) + " cells and need about " +
                        Input::to_text(needed / 1e9) +
-                       " GB, more than 80 % of the " +
+                       " GB, more than " +
+                       Input::to_text(100 * largest_share) + " % of the " +
                        Input::to_text(available / 1e9) +
                        " GB available; use fewer cells (repetitions, "
                        "Global refinements, Local refinements)");

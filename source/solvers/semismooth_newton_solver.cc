@@ -302,7 +302,9 @@ namespace FrictionalContact
                       "Eisenstat-Walker: by 0.9 (|F_k|/|F_k-1|)^2 (their "
                       "choice 2, safeguarded, at most Linear reduction), with "
                       "|F| the line search's merit, ten times smaller after a "
-                      "shortened step; after 5 steps without progress, the "
+                      "shortened step; after " +
+                        std::to_string(SemismoothNewton::steps_before_fall_back) +
+                        " steps without progress, the "
                       "fixed rule with a tenth of Linear reduction. Measured "
                       "(doc/performance.md): 40 % fewer Krylov iterations on "
                       "example II, but more Newton steps on the Hertz "
