@@ -106,6 +106,15 @@ namespace FrictionalContact
 
 
   template <int dim>
+  bool
+  IncrementSolver<dim>::elastic_trial() const
+  {
+    return solver.try_elastic_first && solver.method->wants_elastic_trial();
+  }
+
+
+
+  template <int dim>
   IncrementOutcome<dim>
   IncrementSolver<dim>::solve(const Model<dim>  &model,
                               const State<dim>  &state,
@@ -136,7 +145,7 @@ namespace FrictionalContact
 
     outcome.du_solved       = body.make_vector();
     SolveStatistics &result = outcome.statistics;
-    if (!contact.active() || solver.try_elastic_first)
+    if (!contact.active() || elastic_trial())
       {
         TimerOutput::Scope scope(timer, "Elastic solve");
         const Timer        wall;
@@ -203,15 +212,17 @@ namespace FrictionalContact
     double largest_gap = 0;
     for (const double g : problem.gaps)
       largest_gap = std::max(largest_gap, std::abs(g));
+    // Without the elastic trial, the Newton method measures with its own
+    // displacement (meets(): the larger of this and max |du|).
     problem.length_scale =
       std::max({Utilities::MPI::max(largest_gap, comm),
                 start.linfty_norm(),
-                solver.try_elastic_first ? du.linfty_norm() : 0.});
-    if (!(problem.length_scale > 0))
+                elastic_trial() ? du.linfty_norm() : 0.});
+    if (!(problem.length_scale > 0) && solver.method->wants_elastic_trial())
       problem.length_scale = 1;
 
     bool separates = false;
-    if (solver.try_elastic_first)
+    if (elastic_trial())
       {
         bool penetrates = false;
         for (unsigned int j = 0; j < contact.n_local() && !penetrates; ++j)

@@ -353,6 +353,32 @@ namespace FrictionalContact
 
 
   template <int dim>
+  bool
+  ContactOperator<dim>::nodal_block(const unsigned int    j,
+                                    const Tensor<2, dim> &B,
+                                    NodalBlock           &block) const
+  {
+    Tensor<2, dim> frame; // columns: the local directions, Cartesian
+    for (unsigned int a = 0; a < dim; ++a)
+      {
+        Tensor<1, dim> e;
+        e[a]                          = 1;
+        const Tensor<1, dim> column   = to_cartesian(j, e);
+        for (unsigned int c = 0; c < dim; ++c)
+          frame[c][a] = column[c];
+      }
+    const Tensor<2, dim> cartesian = frame * B * transpose(frame);
+    block.dofs.assign(nodes[j].dofs.begin(), nodes[j].dofs.end());
+    block.values.resize(dim * dim);
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = 0; b < dim; ++b)
+        block.values[a * dim + b] = cartesian[a][b];
+    return true;
+  }
+
+
+
+  template <int dim>
   double
   ContactOperator<dim>::largest_singular_value() const
   {

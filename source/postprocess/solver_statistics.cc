@@ -6,7 +6,7 @@ namespace FrictionalContact
   namespace Postprocess
   {
     /// The columns of the contact solve: iterations, linear iterations,
-    /// AMG set-ups, wall time and the paper's three residuals.
+    /// AMG set-ups and updates, wall time and the paper's three residuals.
     template <int dim>
     class SolverStatistics : public Interface<dim>
     {
@@ -18,6 +18,7 @@ namespace FrictionalContact
         return {{"Contact solver iterations", std::uint64_t(solve.iterations)},
                 {"Krylov iterations", std::uint64_t(solve.linear_iterations)},
                 {"AMG setups", std::uint64_t(solve.amg_setups)},
+                {"AMG updates", std::uint64_t(solve.amg_updates)},
                 {"Solve wall time (s)", solve.seconds},
                 {"Force balance residual", solve.residuals.force_balance, true},
                 {"Complementarity residual",
@@ -33,6 +34,8 @@ namespace FrictionalContact
       "solver statistics",
       "Statistics columns of the contact solve: its iterations, the Krylov "
       "iterations of its linear solves (column 'Krylov iterations': CG, or GMRES "
-      "when a node slips), AMG set-ups, wall time and the three residuals.")
+      "when a node slips), AMG set-ups, AMG updates (the Newton method's "
+      "preconditioner made again for new node conditions, its coarse levels "
+      "only), wall time and the three residuals.")
   } // namespace Postprocess
 } // namespace FrictionalContact

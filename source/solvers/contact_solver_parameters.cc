@@ -30,7 +30,10 @@ namespace FrictionalContact
                       "K du = p once: if no candidate then reaches the "
                       "obstacle, this is the solution (every node free, "
                       "r = 0) and the iteration is skipped. Algorithm 2 "
-                      "converges very slowly when nothing touches.");
+                      "converges very slowly when nothing touches. The "
+                      "semismooth Newton method never tries it: its first "
+                      "iteration is that elastic solve, and a body that "
+                      "touches nothing converges with every node free.");
     prm.declare_entry("Lanczos vectors",
                       "20",
                       Patterns::Integer(4),

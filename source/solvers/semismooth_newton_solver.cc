@@ -1,7 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/solvers/semismooth_newton_linearization.h>
+#include <frictional_contact/solvers/semismooth_newton_preconditioner.h>
 #include <frictional_contact/solvers/progress_rules.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
@@ -138,10 +138,11 @@ namespace FrictionalContact
      */
     template <int dim>
     unsigned int
-    solve_linearized(const IncrementalProblem<dim> &problem,
-                     const ActiveSets<dim>         &sets,
-                     const NodeProjection<dim>     &P,
-                     ShiftedStiffnessSolver        &linear_solver,
+    solve_linearized(const IncrementalProblem<dim>        &problem,
+                     const ActiveSets<dim>                &sets,
+                     const NodeProjection<dim>            &P,
+                     const ConditionPreconditioner<dim>   &preconditioner,
+                     ShiftedStiffnessSolver               &linear_solver,
                      const double                   mu_k,
                      const double                   reduction,
                      const double                   floor,
@@ -171,7 +172,10 @@ namespace FrictionalContact
       w = 0;
       const Timer        timer;
       const unsigned int iterations = solve_newton_system(
-        A, ProjectedPreconditioner<dim>(linear_solver, P), any_slip,
+        A,
+        ProjectedPreconditioner<dim, ConditionPreconditioner<dim>>(
+          preconditioner, P),
+        any_slip,
         linear_solver.maximum_iterations(),
         std::max(reduction * rhs.l2_norm(), floor), rhs, w);
       linear_solver.krylov_seconds += timer.wall_time();
@@ -293,6 +297,19 @@ namespace FrictionalContact
                       "The largest forcing term: CG (or GMRES) reduces the "
                       "residual of a Newton system by at most this factor "
                       "(see Forcing term).");
+    prm.declare_entry(
+      "Preconditioner",
+      "AMG with node conditions",
+      Patterns::Selection("AMG with node conditions|AMG of K"),
+      "The preconditioner of the Newton systems. AMG with node conditions: "
+      "the AMG of K with stiff springs in the directions the node conditions "
+      "hold and the Robin term across slips, its coarse levels made again "
+      "(cheaply) when the conditions change; its Krylov iterations per "
+      "Newton step hardly grow with the mesh or the slip set. AMG of K: the "
+      "AMG of K alone, built once, blind to the conditions (about four "
+      "times the Krylov iterations on Kanno's example II; "
+      "doc/performance.md). Both follow <Linear solver/Preconditioner>: "
+      "with Jacobi, the diagonal of K.");
     prm.declare_entry("Forcing term",
                       "fixed",
                       Patterns::Selection("fixed|Eisenstat-Walker"),
@@ -321,6 +338,8 @@ namespace FrictionalContact
     linear_reduction = prm.get_double("Linear reduction");
     forcing_rule = ForcingTerm::rule_from_name(prm.get("Forcing term"));
     tangential_factor = prm.get_double("Tangential parameter");
+    preconditioner_sees_conditions =
+      prm.get("Preconditioner") == "AMG with node conditions";
   }
 
 
@@ -379,6 +398,8 @@ namespace FrictionalContact
     const NodeProjection<dim> P(contact, conditions);
     bool                      first     = true;
     ForcingTerm               forcing(forcing_rule, linear_reduction);
+    ConditionPreconditioner<dim> preconditioner(
+      linear_solver, contact, preconditioner_sees_conditions, comm);
     MeritWatch                progress;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
@@ -404,6 +425,10 @@ namespace FrictionalContact
             continue;
           }
 
+        // The preconditioner for the new conditions, if they changed.
+        if (preconditioner.update(sets, c, mu_k > 0, comm))
+          ++result.amg_updates;
+
         // The linear problem: du = du_D + w, with du_D meeting the node
         // conditions and w in the subspace where they are homogeneous.
         previous_du       = du;
@@ -416,7 +441,7 @@ namespace FrictionalContact
         try
           {
             linear_iterations =
-              solve_linearized(problem, sets, P, linear_solver, mu_k,
+              solve_linearized(problem, sets, P, preconditioner, linear_solver, mu_k,
                                forcing_term, 0.1 * this->stop.tolerance * load_norm,
                                du, K_du, rhs, w);
           }

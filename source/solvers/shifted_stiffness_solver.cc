@@ -149,8 +149,9 @@ namespace FrictionalContact
     std::vector<std::vector<double>>      rigid_body_modes,
     const double                          smallest_eigenvalue_estimate)
   {
-    stiffness       = &K;
-    modes           = std::move(rigid_body_modes);
+    stiffness        = &K;
+    modes            = std::move(rigid_body_modes);
+    spring_amg_tried = false;
     stiffness_floor = smallest_eigenvalue_estimate;
     elastic_amg.sigma = -1;
     shifted_amg.sigma = -1;
@@ -169,6 +170,8 @@ namespace FrictionalContact
   void
   ShiftedStiffnessSolver::release()
   {
+    spring_amg.clear();
+    spring_amg_tried = false;
     elastic_amg.preconditioner.clear();
     shifted_amg.preconditioner.clear();
     elastic_amg.sigma = -1;
@@ -257,6 +260,22 @@ namespace FrictionalContact
     ++n_amg_setups;
     amg_setup_seconds += timer.wall_time();
     return amg.preconditioner;
+  }
+
+
+
+  SpringAMG &
+  ShiftedStiffnessSolver::spring_preconditioner()
+  {
+    if (!spring_amg_tried && !use_jacobi(0.))
+      {
+        const auto  &amg = amg_for(0.);
+        const double before = spring_amg.setup_seconds;
+        spring_amg.initialize(*stiffness, amg, modes, smoother_sweeps);
+        amg_setup_seconds += spring_amg.setup_seconds - before;
+        spring_amg_tried = true;
+      }
+    return spring_amg;
   }
 
 

@@ -115,6 +115,11 @@ namespace FrictionalContact
     }
 
   private:
+    /// Whether each increment tries the elastic solution first: when asked
+    /// for and the method wants it.
+    bool
+    elastic_trial() const;
+
     /// mu_pi, computed when the contact iteration first needs it.
     double
     smallest_eigenvalue_of_K(const Model<dim> &model, TimerOutput &timer);

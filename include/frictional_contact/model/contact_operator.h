@@ -165,6 +165,12 @@ namespace FrictionalContact
     std::vector<double>
     normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const override;
 
+    /// T_j B T_j^T on the dim dofs of node j.
+    bool
+    nodal_block(const unsigned int    j,
+                const Tensor<2, dim> &B,
+                NodalBlock           &block) const override;
+
     /// The largest singular value of T, computed from the nodal blocks.
     double
     largest_singular_value() const override;

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/solvers/friction_cone.h>
+#include <frictional_contact/solvers/nodal_block.h>
 
 #include <numeric>
 #include <vector>
@@ -62,6 +63,21 @@ namespace FrictionalContact
     /// units of the problem.
     virtual std::vector<double>
     normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const = 0;
+
+    /**
+     * T_j B T_j^T on the dofs of candidate j's node, for a block @p B in
+     * its local coordinates (normal first): how a preconditioner sees a
+     * spring in the directions of a node condition. Returns false, and
+     * leaves @p block alone, if T_j does not act on the dofs of one node
+     * (the default).
+     */
+    virtual bool
+    nodal_block(const unsigned int /*j*/,
+                const Tensor<2, dim> & /*B*/,
+                NodalBlock & /*block*/) const
+    {
+      return false;
+    }
 
     /// The largest singular value of T (the paper's sigma_T).
     virtual double

@@ -110,6 +110,9 @@ namespace FrictionalContact
     /// Krylov (CG or GMRES) iterations of all linear solves.
     unsigned int linear_iterations = 0;
     unsigned int amg_setups     = 0;
+    /// Updates of the AMG for new node conditions (Newton): its coarse
+    /// levels made again, not a set-up.
+    unsigned int amg_updates    = 0;
     double       seconds        = 0;
     double       last_step      = 0;
     Residuals    residuals;

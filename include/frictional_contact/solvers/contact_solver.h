@@ -71,6 +71,19 @@ namespace FrictionalContact
     }
 
     /**
+     * Whether the elastic solution of an increment is worth trying first
+     * (<Contact solver/Try the elastic solution first>): a method that
+     * converges slowly when nothing touches (Algorithm 2) says yes; one
+     * that finds that out in its first iterations (Newton) says no, and
+     * then also needs no length scale from it.
+     */
+    virtual bool
+    wants_elastic_trial() const
+    {
+      return true;
+    }
+
+    /**
      * Solves @p problem. @p du and @p r hold the initial iterate on entry
      * and the last iterate on exit (whether or not it converged).
      */

@@ -5,7 +5,6 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <frictional_contact/solvers/contact_problem.h>
-#include <frictional_contact/solvers/shifted_stiffness_solver.h>
 
 #include <limits>
 #include <vector>
@@ -310,38 +309,39 @@ namespace FrictionalContact
 
 
 
-    /// P M P with M the preconditioner of K (the AMG, unless <Linear
-    /// solver/Preconditioner> asks for Jacobi).
-    template <int dim>
+    /// P M P with M the preconditioner of the Newton systems (a
+    /// ConditionPreconditioner).
+    template <int dim, typename Preconditioner>
     class ProjectedPreconditioner
     {
     public:
-      ProjectedPreconditioner(const ShiftedStiffnessSolver &stiffness_solver,
-                              const NodeProjection<dim>    &P)
-        : stiffness_solver(stiffness_solver)
+      ProjectedPreconditioner(const Preconditioner      &M,
+                              const NodeProjection<dim> &P)
+        : M(M)
         , P(P)
       {}
 
       void
       vmult(Vector &dst, const Vector &src) const
       {
-        stiffness_solver.precondition_stiffness(dst, src);
+        M.vmult(dst, src);
         P.apply(dst);
       }
 
     private:
-      const ShiftedStiffnessSolver &stiffness_solver;
-      const NodeProjection<dim>    &P;
+      const Preconditioner      &M;
+      const NodeProjection<dim> &P;
     };
+
     /**
      * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
      * a slipping node makes A non-symmetric, else CG. Returns the Krylov
      * iterations; throws SolverControl::NoConvergence.
      */
-    template <int dim>
+    template <int dim, typename Preconditioner>
     unsigned int
-    solve_newton_system(const ContactStiffness<dim>        &A,
-                        const ProjectedPreconditioner<dim> &preconditioner,
+    solve_newton_system(const ContactStiffness<dim> &A,
+                        const Preconditioner        &preconditioner,
                         const bool                          non_symmetric,
                         const unsigned int                  max_iterations,
                         const double                        goal,

@@ -19,8 +19,9 @@ namespace FrictionalContact
    * the slip direction: the linearisation of r_t = mu |r_n| zeta/|zeta|.
    * The constraints are imposed by projection inside CG (GMRES(50) when a
    * node slips, since the coupling makes the system non-symmetric),
-   * preconditioned with the AMG of K (or Jacobi, as <Linear solver/
-   * Preconditioner> says), built once, to the accuracy of a ForcingTerm.
+   * preconditioned with the AMG of K with the node conditions as springs
+   * (ConditionPreconditioner; or Jacobi, as <Linear solver/
+   * Preconditioner> says), to the accuracy of a ForcingTerm.
    * A line search on the complementarity functions and the force balance
    * keeps the sets from cycling. c_j is the normal stiffness of node j,
    * t_n,j^T K t_n,j: the method does not depend on the units. The
@@ -49,6 +50,14 @@ namespace FrictionalContact
       return "Newton";
     }
 
+    /// No: the first Newton iteration is an elastic solve, and a body
+    /// that touches nothing converges with every node free.
+    bool
+    wants_elastic_trial() const override
+    {
+      return false;
+    }
+
     SolveStatistics
     solve(const IncrementalProblem<dim> &problem,
           ShiftedStiffnessSolver        &linear_solver,
@@ -60,5 +69,6 @@ namespace FrictionalContact
     double            linear_reduction;
     ForcingTerm::Rule forcing_rule;
     double            tangential_factor;
+    bool              preconditioner_sees_conditions;
   };
 } // namespace FrictionalContact

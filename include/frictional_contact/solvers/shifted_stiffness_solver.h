@@ -5,6 +5,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/spring_amg.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,7 +31,8 @@ namespace FrictionalContact
    *   null space) built on K + sigma_ref I, reused while sigma stays
    *   within a factor "AMG rebuild factor" of sigma_ref (or both are below
    *   the stiffness scale, where the shift does not matter). The AMG of the
-   *   plain elastic problem (sigma = 0) is kept separately.
+   *   plain elastic problem (sigma = 0) is kept separately, and so is its
+   *   variant with springs for the Newton systems (spring_preconditioner()).
    */
   class ShiftedStiffnessSolver
   {
@@ -93,6 +96,14 @@ namespace FrictionalContact
       return rel_tolerance;
     }
 
+    /**
+     * The AMG of K plus springs (SpringAMG), taken from the AMG of K
+     * (built first if needed) and kept until release(); not initialized()
+     * when <Linear solver/Preconditioner> makes K's preconditioner Jacobi.
+     */
+    SpringAMG &
+    spring_preconditioner();
+
     /// How many times the AMG was set up, and the seconds it took.
     unsigned int n_amg_setups = 0;
     double       amg_setup_seconds = 0;
@@ -146,6 +157,9 @@ namespace FrictionalContact
     /// does not rebuild either.
     AMG elastic_amg;
     AMG shifted_amg;
+    /// The AMG of K with springs, for the Newton systems.
+    SpringAMG spring_amg;
+    bool      spring_amg_tried = false;
 
     Vector diagonal;
     Vector inverse_diagonal;
