@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Every figure of doc/performance.md in one run (about 35 minutes on a
+# Every figure of doc/performance.md in one run (about 30 minutes on a
 # quiet 2-core machine): the semismooth Newton solver on Kanno's example II
-# from N_Y = 10 to 79 (d = 7,260 to 3,033,600; the last two sizes on 2 MPI
-# ranks), the solver settings at N_Y = 20, and 1 against 2 ranks at
+# at every size of the paper's series, N_Y = 10, 12, ..., 28, and at
+# N_Y = 55 and 79 (d = 1,034,880 and 3,033,600, on 2 MPI ranks), the
+# solver settings at N_Y = 20, and 1 against 2 ranks at
 # N_Y = 28 (best of 3). Each time also in units of one elastic AMG-CG solve
 # of the same mesh. Writes, afresh, doc/benchmarks/scale.csv,
 # solver-settings.csv and parallel.csv (or into the folder given).
@@ -17,15 +18,16 @@ mkdir -p "$folder"
 rm -f "$folder/scale.csv" "$folder/solver-settings.csv" "$folder/parallel.csv"
 
 echo "== how the cost grows with d"
-python3 bench/run_series.py --series ex2 --solvers newton --sizes 10,14,20,28 \
+python3 bench/run_series.py --series ex2 --solvers newton \
+  --sizes 10,12,14,16,18,20,22,24,26,28 \
   --csv "$folder/scale.csv"
 python3 bench/run_series.py --series ex2 --solvers newton --sizes 55,79 \
   --ranks 2 --csv "$folder/scale.csv"
 
 echo "== solver settings at N_Y = 20"
-variants="default,EW 0.1,EW 0.3,EW 0.5,EW 0.01,sweeps 1,sweeps 3"
-variants+=",threshold 0,threshold 0.02,threshold 0.08,translations,Gauss-Seidel"
-variants+=",damping 0,damping 0.67,EW 0.1+sweeps 1,EW 0.1+damping 0"
+variants="default,AMG of K,fixed 0.01,fixed 0.01+AMG of K,EW 0.01,EW 0.3,EW 0.5"
+variants+=",sweeps 1,sweeps 3,threshold 0,threshold 0.02,threshold 0.08"
+variants+=",translations,Gauss-Seidel,damping 0,damping 0.67"
 python3 bench/solver_settings.py --sizes 20 --repeat 2 --variants "$variants" \
   --csv "$folder/solver-settings.csv"
 

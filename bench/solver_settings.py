@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The Newton solver and ML under different settings, measured on the same
-scenes: the forcing term of the inexact Newton method and ML's smoother,
-sweeps, aggregation threshold, prolongator damping and near null space.
+scenes: the preconditioner of the Newton systems (with the node conditions
+or the AMG of K alone), the forcing term of the inexact Newton method and
+ML's smoother, sweeps, aggregation threshold, prolongator damping and near
+null space. "fixed 0.01+AMG of K" is the solver before issue 19.
 
 For each instance (example II at --sizes, friction --mu) and each variant,
 runs the elastic scene (no contact: the unit, with the variant's ML
@@ -31,10 +33,11 @@ LINEAR = "subsection Linear solver\n{}\nend\n"
 # defaults.
 VARIANTS = {
     "default": ("", ""),
-    "EW 0.1": ("  set Forcing term = Eisenstat-Walker\n  set Linear reduction = 0.1", ""),
-    "EW 0.3": ("  set Forcing term = Eisenstat-Walker\n  set Linear reduction = 0.3", ""),
-    "EW 0.5": ("  set Forcing term = Eisenstat-Walker\n  set Linear reduction = 0.5", ""),
-    "EW 0.01": ("  set Forcing term = Eisenstat-Walker\n  set Linear reduction = 0.01", ""),
+    "AMG of K": ("  set Preconditioner = AMG of K", ""),
+    "fixed 0.01": ("  set Forcing term = fixed\n  set Linear reduction = 0.01", ""),
+    "EW 0.01": ("  set Linear reduction = 0.01", ""),
+    "EW 0.3": ("  set Linear reduction = 0.3", ""),
+    "EW 0.5": ("  set Linear reduction = 0.5", ""),
     "sweeps 1": ("", " set AMG smoother sweeps = 1"),
     "sweeps 3": ("", " set AMG smoother sweeps = 3"),
     "threshold 0": ("", " set AMG aggregation threshold = 0"),
@@ -45,6 +48,7 @@ VARIANTS = {
     "damping 0": ("", " set AMG prolongator damping = 0"),
     "damping 0.67": ("", " set AMG prolongator damping = 0.67"),
 }
+
 COLUMNS = ["N_Y", "mu", "ranks", "variant", "d", "iterations", "krylov_iterations",
            "amg_setups", "elastic_solve_s", "solve_s", "ratio_to_elastic",
            "peak_memory_mb", "bytes_per_unknown", "converged"]

@@ -3,7 +3,8 @@
 // sequences: the fixed rule tightens ten times after a shortened step and
 // relaxes again after full steps; Eisenstat-Walker's choice 2 follows the
 // square of the residual ratio, is held up by its safeguard while it is
-// large, is ten times smaller after a shortened step, never exceeds the
+// large, is ten times smaller after a shortened step (and shortened steps
+// in a row tighten it further, as the fixed rule does), never exceeds the
 // largest forcing term and never falls below 1e-8; falling back gives the
 // fixed rule with a tenth of the largest term.
 #include <frictional_contact/solvers/forcing_term.h>

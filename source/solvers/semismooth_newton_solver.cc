@@ -292,7 +292,7 @@ namespace FrictionalContact
                       "times smaller: a large c_t makes the slip direction "
                       "flip back and forth, a small one decides by the force.");
     prm.declare_entry("Linear reduction",
-                      "1e-2",
+                      "0.1",
                       Patterns::Double(0., 1.),
                       "The largest forcing term: CG (or GMRES) reduces the "
                       "residual of a Newton system by at most this factor "
@@ -311,7 +311,7 @@ namespace FrictionalContact
       "doc/performance.md). Both follow <Linear solver/Preconditioner>: "
       "with Jacobi, the diagonal of K.");
     prm.declare_entry("Forcing term",
-                      "fixed",
+                      "Eisenstat-Walker",
                       Patterns::Selection("fixed|Eisenstat-Walker"),
                       "How much CG (or GMRES) reduces the residual of each "
                       "Newton system. fixed: by Linear reduction, ten times "
