@@ -314,18 +314,18 @@ namespace FrictionalContact
                       "Eisenstat-Walker",
                       Patterns::Selection("fixed|Eisenstat-Walker"),
                       "How much CG (or GMRES) reduces the residual of each "
-                      "Newton system. fixed: by Linear reduction, ten times "
-                      "more after a step the line search had to shorten. "
-                      "Eisenstat-Walker: by 0.9 (|F_k|/|F_k-1|)^2 (their "
-                      "choice 2, safeguarded, at most Linear reduction), with "
-                      "|F| the line search's merit, ten times smaller after a "
-                      "shortened step; after " +
+                      "Newton system. Eisenstat-Walker: by 0.9 (|F_k|/"
+                      "|F_k-1|)^2 (their choice 2, safeguarded, at most "
+                      "Linear reduction), with |F| the line search's merit; "
+                      "after a shortened step ten times less than the "
+                      "smaller of that and the previous term; after " +
                         std::to_string(SemismoothNewton::steps_before_fall_back) +
-                        " steps without progress, the "
-                      "fixed rule with a tenth of Linear reduction. Measured "
-                      "(doc/performance.md): 40 % fewer Krylov iterations on "
-                      "example II, but more Newton steps on the Hertz "
-                      "scenes, so not the default.");
+                        " steps without progress, the fixed rule with a "
+                        "tenth of Linear reduction. fixed: by Linear "
+                        "reduction, ten times more after a step the line "
+                        "search had to shorten. Measured "
+                        "(doc/performance.md): 40 % fewer Krylov iterations "
+                        "than fixed on example II.");
   }
 
 

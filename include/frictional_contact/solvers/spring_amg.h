@@ -101,6 +101,10 @@ namespace FrictionalContact
     void
     apply_matrix(Vector &dst, const Vector &src) const;
 
+    /// residual = b - (K + S) x (scratch is overwritten).
+    void
+    residual_of(const Vector &x, const Vector &b) const;
+
     /// x += Chebyshev polynomial of the Jacobi-scaled K + S applied to r,
     /// from a zero correction; r is overwritten.
     void
