@@ -267,11 +267,16 @@ namespace FrictionalContact
   SpringAMG &
   ShiftedStiffnessSolver::spring_preconditioner()
   {
-    if (!spring_amg_tried && !use_jacobi(0.))
+    // Its fine level smooths as ML's Chebyshev does; with another
+    // smoother the Newton method keeps the AMG of K.
+    if (!spring_amg_tried && !use_jacobi(0.) && smoother_type == "Chebyshev")
       {
         const auto  &amg = amg_for(0.);
         const double before = spring_amg.setup_seconds;
-        spring_amg.initialize(*stiffness, amg, modes, smoother_sweeps);
+        const int dim = modes.size() == 3 ? 2 : 3;
+        const std::vector<std::vector<double>> used_modes(
+          modes.begin(), modes.begin() + (translations_only ? dim : modes.size()));
+        spring_amg.initialize(*stiffness, amg, used_modes, smoother_sweeps);
         amg_setup_seconds += spring_amg.setup_seconds - before;
         spring_amg_tried = true;
       }

@@ -88,16 +88,19 @@ namespace FrictionalContact
       const_cast<ML_Epetra::MultiLevelPreconditioner *>(ml_preconditioner)
         ->GetList();
     chebyshev_ratio = list.get("smoother: Chebyshev alpha", 20.);
-    const bool two_levels =
-      take_first_level(*ml_preconditioner, rigid_body_modes);
+    ML *ml = const_cast<ML *>(ml_preconditioner->GetML());
+    const bool two_levels = ml->ML_num_actual_levels >= 2;
+    if (two_levels && !take_first_level(*ml_preconditioner, rigid_body_modes))
+      {
+        clear(); // not initialized(): the Newton method uses ML's own AMG
+        return;
+      }
     if (!two_levels)
       {
         // One level: ML solves K directly, and so do we with K + S.
         galerkin_matrix =
           std::make_unique<Epetra_CrsMatrix>(stiffness.trilinos_matrix());
-        coarse_block_size = stiffness.trilinos_matrix().NumMyRows() > 0 ?
-                              list.get("PDE equations", 1) :
-                              1;
+        coarse_block_size = list.get("PDE equations", 1);
         coarse_null_space = std::make_unique<Epetra_MultiVector>(
           galerkin_matrix->RowMap(), rigid_body_modes.size());
         for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
@@ -121,7 +124,18 @@ namespace FrictionalContact
     // much (0.03 instead of 0.07 s at d = 52,920) for 10 % more Krylov
     // iterations (doc/performance.md).
     if (two_levels)
-      coarse_parameters.set("aggregation: damping factor", 0.);
+      {
+        coarse_parameters.set("aggregation: damping factor", 0.);
+        // At least one more level, so that an update never factors all of
+        // A_1: a direct solve of its 560 rows (N_Y = 10) made the updates
+        // cost more than the Krylov iterations they save.
+        const int coarse_rows = galerkin_matrix->NumGlobalRows();
+        coarse_parameters.set(
+          "coarse: max size",
+          std::max(1,
+                   std::min(list.get("coarse: max size", 2000),
+                            coarse_rows / 4)));
+      }
 
     coarse_matrix =
       std::make_unique<Epetra_FECrsMatrix>(Copy, galerkin_matrix->Graph());
@@ -153,7 +167,7 @@ namespace FrictionalContact
   {
     ML                 *ml        = const_cast<ML *>(ml_preconditioner.GetML());
     const ML_Aggregate *aggregate = ml_preconditioner.GetML_Aggregate();
-    if (ml->ML_num_actual_levels < 2 || aggregate == nullptr ||
+    if (aggregate == nullptr ||
         aggregate->P_tentative == nullptr ||
         aggregate->nullspace_dim != static_cast<int>(rigid_body_modes.size()))
       return false;

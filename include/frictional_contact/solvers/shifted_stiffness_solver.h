@@ -99,7 +99,9 @@ namespace FrictionalContact
     /**
      * The AMG of K plus springs (SpringAMG), taken from the AMG of K
      * (built first if needed) and kept until release(); not initialized()
-     * when <Linear solver/Preconditioner> makes K's preconditioner Jacobi.
+     * when <Linear solver/Preconditioner> makes K's preconditioner Jacobi
+     * or the AMG smoother is not Chebyshev (its fine level smooths as
+     * ML's Chebyshev does).
      */
     SpringAMG &
     spring_preconditioner();

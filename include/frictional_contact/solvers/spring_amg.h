@@ -83,7 +83,7 @@ namespace FrictionalContact
   private:
     /**
      * Takes P, A_1 and the coarse rigid-body modes from the ML hierarchy
-     * of K. Returns false if ML made a single level (a direct solve).
+     * of K (of at least two levels). Returns false if it cannot.
      */
     bool
     take_first_level(const ML_Epetra::MultiLevelPreconditioner &ml,
