@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# Every figure of doc/performance.md in one run (about 30 minutes on a
+# Every figure of doc/performance.md in one run (about 40 minutes on a
 # quiet 2-core machine): the semismooth Newton solver on Kanno's example II
-# at every size of the paper's series, N_Y = 10, 12, ..., 28, and at
-# N_Y = 55 and 79 (d = 1,034,880 and 3,033,600, on 2 MPI ranks), the
-# solver settings at N_Y = 20, and 1 against 2 ranks at
+# at every size of the paper's series, N_Y = 10, 12, ..., 28 (best of 3),
+# and at N_Y = 56 and 80 (d = 1,091,664 and 3,149,280, on 2 MPI ranks;
+# even sizes, so that the coarse mesh every rank holds is small), the
+# solver settings at N_Y = 20 (best of 2), and 1 against 2 ranks at
 # N_Y = 28 (best of 3). Each time also in units of one elastic AMG-CG solve
-# of the same mesh. Writes, afresh, doc/benchmarks/scale.csv,
-# solver-settings.csv and parallel.csv (or into the folder given).
+# of the same mesh, measured the same way. Writes, afresh,
+# doc/benchmarks/scale.csv, solver-settings.csv and parallel.csv (or into
+# the folder given).
 # usage: bench/performance.sh [folder]   (from the top of the repository,
-#        after scripts/setup.sh; N_Y = 79 needs about 16 GB of memory)
+#        after scripts/setup.sh; N_Y = 80 needs about 16 GB of memory)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
@@ -19,9 +21,9 @@ rm -f "$folder/scale.csv" "$folder/solver-settings.csv" "$folder/parallel.csv"
 
 echo "== how the cost grows with d"
 python3 bench/run_series.py --series ex2 --solvers newton \
-  --sizes 10,12,14,16,18,20,22,24,26,28 \
+  --sizes 10,12,14,16,18,20,22,24,26,28 --repeat 3 \
   --csv "$folder/scale.csv"
-python3 bench/run_series.py --series ex2 --solvers newton --sizes 55,79 \
+python3 bench/run_series.py --series ex2 --solvers newton --sizes 56,80 \
   --ranks 2 --csv "$folder/scale.csv"
 
 echo "== solver settings at N_Y = 20"

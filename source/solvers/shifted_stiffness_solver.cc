@@ -102,6 +102,15 @@ namespace FrictionalContact
                       "Chebyshev",
                       Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
                       "The smoother on each level of the AMG.");
+    prm.declare_entry("AMG coarse solver",
+                      "MUMPS",
+                      Patterns::Selection("MUMPS|KLU"),
+                      "The direct solver of ML's coarsest level (Amesos): the "
+                      "multifrontal MUMPS or KLU, deal.II's default. The "
+                      "coarsest levels of 3D elasticity are dense enough for "
+                      "MUMPS to factor them several times faster, which the "
+                      "Newton method's preconditioner does at every change "
+                      "of the node conditions (doc/performance.md).");
     prm.declare_entry("AMG near null space",
                       "rigid body modes",
                       Patterns::Selection("rigid body modes|translations"),
@@ -135,6 +144,7 @@ namespace FrictionalContact
     rebuild_factor        = prm.get_double("AMG rebuild factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother_type         = prm.get("AMG smoother type");
+    coarse_solver         = "Amesos-" + prm.get("AMG coarse solver");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     prolongator_damping   = prm.get_double("AMG prolongator damping");
     translations_only = prm.get("AMG near null space") == "translations";
@@ -235,6 +245,7 @@ namespace FrictionalContact
     data.higher_order_elements = false;
     data.smoother_sweeps       = smoother_sweeps;
     data.smoother_type         = smoother_type.c_str();
+    data.coarse_type           = coarse_solver.c_str();
     data.aggregation_threshold = aggregation_threshold;
 
     Teuchos::ParameterList              parameters;

@@ -110,11 +110,6 @@ namespace FrictionalContact
       }
     coarse_parameters = list;
     coarse_parameters.set("ML output", 0);
-    // The infinity norm of D^-1 A_1 bounds the largest eigenvalue that the
-    // coarse Chebyshev smoother needs, without ML's ten CG iterations: a
-    // new S costs 30 % less, for no more Krylov iterations (measured at
-    // N_Y = 28).
-    coarse_parameters.set("eigen-analysis: type", "Anorm");
     coarse_parameters.set("PDE equations", static_cast<int>(coarse_block_size));
     coarse_parameters.set("null space: type", "pre-computed");
     coarse_parameters.set("null space: dimension",
@@ -124,18 +119,7 @@ namespace FrictionalContact
     // much (0.03 instead of 0.07 s at d = 52,920) for 10 % more Krylov
     // iterations (doc/performance.md).
     if (two_levels)
-      {
-        coarse_parameters.set("aggregation: damping factor", 0.);
-        // At least one more level, so that an update never factors all of
-        // A_1: a direct solve of its 560 rows (N_Y = 10) made the updates
-        // cost more than the Krylov iterations they save.
-        const int coarse_rows = galerkin_matrix->NumGlobalRows();
-        coarse_parameters.set(
-          "coarse: max size",
-          std::max(1,
-                   std::min(list.get("coarse: max size", 2000),
-                            coarse_rows / 4)));
-      }
+      coarse_parameters.set("aggregation: damping factor", 0.);
 
     coarse_matrix =
       std::make_unique<Epetra_FECrsMatrix>(Copy, galerkin_matrix->Graph());

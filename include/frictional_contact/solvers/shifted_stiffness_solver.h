@@ -144,6 +144,7 @@ namespace FrictionalContact
     double       rebuild_factor;
     unsigned int smoother_sweeps;
     std::string  smoother_type;
+    std::string  coarse_solver;
     double       aggregation_threshold;
     double       prolongator_damping;
     bool         translations_only;
