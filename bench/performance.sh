@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every figure of doc/performance.md in one run (about 40 minutes on a
+# Every figure of doc/performance.md in one run (about 25 minutes on a
 # quiet 2-core machine): the semismooth Newton solver on Kanno's example II
 # at every size of the paper's series, N_Y = 10, 12, ..., 28 (best of 3),
 # and at N_Y = 56 and 80 (d = 1,091,664 and 3,149,280, on 2 MPI ranks;
@@ -8,7 +8,8 @@
 # N_Y = 28 (best of 3). Each time also in units of one elastic AMG-CG solve
 # of the same mesh, measured the same way. Writes, afresh,
 # doc/benchmarks/scale.csv, solver-settings.csv and parallel.csv (or into
-# the folder given).
+# the folder given), plots them into performance.png and prints the tables
+# of doc/performance.md.
 # usage: bench/performance.sh [folder]   (from the top of the repository,
 #        after scripts/setup.sh; N_Y = 80 needs about 16 GB of memory)
 set -euo pipefail
@@ -36,3 +37,6 @@ python3 bench/solver_settings.py --sizes 20 --repeat 2 --variants "$variants" \
 echo "== 1 against 2 ranks at N_Y = 28"
 python3 bench/parallel_efficiency.py --sizes 28 --repeat 3 \
   --csv "$folder/parallel.csv"
+
+echo "== tables and performance.png"
+python3 bench/plot_performance.py "$folder"
