@@ -9,6 +9,7 @@ against d, split into AMG set-ups, Krylov solves and contact operations;
 the peak memory per unknown; 1 against 2 ranks. Prints the tables of
 doc/performance.md in Markdown.
 """
+import argparse
 import csv
 import os
 import sys
@@ -128,7 +129,11 @@ def plot(folder, scale, parallel):
 
 
 def main():
-    folder = sys.argv[1] if len(sys.argv) > 1 else "doc/benchmarks"
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("folder", nargs="?", default="doc/benchmarks",
+                        help="where scale.csv, solver-settings.csv and parallel.csv are")
+    folder = parser.parse_args().folder
     scale = rows_of(folder, "scale.csv")
     settings = rows_of(folder, "solver-settings.csv")
     parallel = rows_of(folder, "parallel.csv")
