@@ -39,42 +39,58 @@ def in_units(row, key):
     return number(row, key) / number(row, "elastic_solve_s")
 
 
-def scale_table(rows):
-    lines = ["| N_Y | d | ranks | Newton steps | Krylov iterations | AMG set-ups and updates | Krylov solves | contact operations | solve | elastic solve | ratio | peak memory per unknown |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        lines.append(
-            f"| {r['N_Y']} | {int(r['d']):,} | {r['ranks']} | {r['iterations']} "
-            f"| {r['cg_iterations']} | {number(r, 'amg_setup_s'):.3g} s "
-            f"| {number(r, 'krylov_s'):.3g} s | {number(r, 'contact_operations_s'):.2g} s "
-            f"| {number(r, 'solve_s'):.3g} s | {number(r, 'elastic_solve_s'):.3g} s "
-            f"| **{number(r, 'ratio_to_elastic'):.2f}** | {kb_per_unknown(r):.1f} kB |")
+def text(key):
+    return lambda r: r[key]
+
+
+def seconds(key, digits=3):
+    return lambda r: f"{number(r, key):.{digits}g} s"
+
+
+def fixed(key, digits=2, bold=False):
+    mark = "**" if bold else ""
+    return lambda r: f"{mark}{number(r, key):.{digits}f}{mark}"
+
+
+def table(rows, columns):
+    """A Markdown table: one row per CSV row, columns as (header, format)."""
+    lines = ["| " + " | ".join(header for header, _ in columns) + " |",
+             "|" + "---|" * len(columns)]
+    lines += ["| " + " | ".join(form(r) for _, form in columns) + " |" for r in rows]
     return "\n".join(lines)
 
 
-def settings_table(rows):
-    lines = ["| variant | Newton steps | Krylov iterations | solve | elastic solve | ratio | peak memory |",
-             "|---|---|---|---|---|---|---|"]
-    for r in rows:
-        lines.append(
-            f"| {r['variant']} | {r['iterations']} | {r['krylov_iterations']} "
-            f"| {number(r, 'solve_s'):.3g} s | {number(r, 'elastic_solve_s'):.3g} s "
-            f"| {number(r, 'ratio_to_elastic'):.2f} | {number(r, 'peak_memory_mb'):.0f} MB |")
-    return "\n".join(lines)
+SCALE_COLUMNS = [
+    ("N_Y", text("N_Y")), ("d", lambda r: f"{int(r['d']):,}"), ("ranks", text("ranks")),
+    ("Newton steps", text("iterations")), ("Krylov iterations", text("cg_iterations")),
+    ("AMG set-ups and updates", seconds("amg_setup_s")), ("Krylov solves", seconds("krylov_s")),
+    ("contact operations", seconds("contact_operations_s", 2)), ("solve", seconds("solve_s")),
+    ("elastic solve", seconds("elastic_solve_s")),
+    ("ratio", fixed("ratio_to_elastic", bold=True)),
+    ("peak memory per unknown", lambda r: f"{kb_per_unknown(r):.1f} kB")]
+
+SETTINGS_COLUMNS = [
+    ("variant", text("variant")), ("Newton steps", text("iterations")),
+    ("Krylov iterations", text("krylov_iterations")), ("solve", seconds("solve_s")),
+    ("elastic solve", seconds("elastic_solve_s")), ("ratio", fixed("ratio_to_elastic")),
+    ("peak memory", lambda r: f"{number(r, 'peak_memory_mb'):.0f} MB")]
+
+PARALLEL_COLUMNS = [
+    ("ranks", text("ranks")), ("Newton steps", text("iterations")),
+    ("Krylov iterations", text("krylov_iterations")), ("set-up", seconds("setup_s")),
+    ("AMG set-ups and updates", seconds("amg_setup_s")), ("Krylov solves", seconds("krylov_s")),
+    ("contact operations", seconds("contact_operations_s", 2)), ("solve", seconds("solve_s")),
+    ("output", seconds("output_s", 2)), ("elastic solve", seconds("elastic_solve_s")),
+    ("ratio", fixed("ratio_to_elastic")), ("speed-up", fixed("speed_up", bold=True))]
 
 
-def parallel_table(rows):
-    lines = ["| ranks | Newton steps | Krylov iterations | set-up | AMG set-ups and updates | Krylov solves | contact operations | solve | output | elastic solve | ratio | speed-up |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        lines.append(
-            f"| {r['ranks']} | {r['iterations']} | {r['krylov_iterations']} "
-            f"| {number(r, 'setup_s'):.3g} s | {number(r, 'amg_setup_s'):.3g} s "
-            f"| {number(r, 'krylov_s'):.3g} s | {number(r, 'contact_operations_s'):.2g} s "
-            f"| {number(r, 'solve_s'):.3g} s | {number(r, 'output_s'):.2g} s "
-            f"| {number(r, 'elastic_solve_s'):.3g} s | {number(r, 'ratio_to_elastic'):.2f} "
-            f"| **{number(r, 'speed_up'):.2f}** |")
-    return "\n".join(lines)
+def stacked_bars(axis, positions, rows, parts, scale=lambda r, key: number(r, key)):
+    """One bar per row at @p positions, stacked from @p parts (key, label)."""
+    bottom = [0.] * len(rows)
+    for key, label in parts:
+        heights = [scale(r, key) for r in rows]
+        axis.bar(positions, heights, bottom=bottom, label=label)
+        bottom = [b + h for b, h in zip(bottom, heights)]
 
 
 def plot(folder, scale, parallel):
@@ -89,13 +105,10 @@ def plot(folder, scale, parallel):
     figure, (cost, memory, ranks) = plt.subplots(1, 3, figsize=(15, 4.5))
     labels = [f"{int(r['N_Y'])}\n{int(r['d']) / 1e3:.0f}k" for r in scale]
     positions = range(len(scale))
-    bottom = [0.] * len(scale)
-    for key, name in (("amg_setup_s", "AMG set-up and updates"),
-                      ("krylov_s", "Krylov solves"),
-                      ("contact_operations_s", "contact operations")):
-        heights = [in_units(r, key) for r in scale]
-        cost.bar(positions, heights, bottom=bottom, label=name)
-        bottom = [b + h for b, h in zip(bottom, heights)]
+    stacked_bars(cost, positions, scale, (("amg_setup_s", "AMG set-up and updates"),
+                                          ("krylov_s", "Krylov solves"),
+                                          ("contact_operations_s", "contact operations")),
+                 in_units)
     cost.plot(positions, [number(r, "ratio_to_elastic") for r in scale], "k.",
               label="whole solve")
     cost.axhline(3, color="k", ls=":", lw=0.8)
@@ -113,13 +126,11 @@ def plot(folder, scale, parallel):
     memory.set_ylabel("peak resident memory per unknown (kB)")
     memory.set_title("memory (goal 2 kB at d >= 1M)")
 
-    bottom = [0.] * len(parallel)
-    for key, name in (("setup_s", "mesh and dofs (before the solve)"), ("amg_setup_s", "AMG set-up and updates"),
-                      ("krylov_s", "Krylov solves"),
-                      ("contact_operations_s", "contact operations")):
-        heights = [number(r, key) for r in parallel]
-        ranks.bar([r["ranks"] for r in parallel], heights, bottom=bottom, label=name)
-        bottom = [b + h for b, h in zip(bottom, heights)]
+    stacked_bars(ranks, [r["ranks"] for r in parallel], parallel,
+                 (("setup_s", "mesh and dofs (before the solve)"),
+                  ("amg_setup_s", "AMG set-up and updates"),
+                  ("krylov_s", "Krylov solves"),
+                  ("contact_operations_s", "contact operations")))
     ranks.set_xlabel("MPI ranks (N_Y = 28, d = 141,288)")
     ranks.set_ylabel("wall time (s)")
     ranks.set_title("1 against 2 ranks (goal: solve 1.85x faster)")
@@ -140,10 +151,10 @@ def main():
     if not scale or not parallel:
         sys.exit(f"plot_performance: {folder} lacks scale.csv or parallel.csv; "
                  "run bench/performance.sh first")
-    print(scale_table(scale), end="\n\n")
+    print(table(scale, SCALE_COLUMNS), end="\n\n")
     if settings:
-        print(settings_table(settings), end="\n\n")
-    print(parallel_table(parallel))
+        print(table(settings, SETTINGS_COLUMNS), end="\n\n")
+    print(table(parallel, PARALLEL_COLUMNS))
     plot(folder, scale, parallel)
 
 

@@ -288,7 +288,7 @@ namespace FrictionalContact
             << Utilities::MPI::max(seconds, mpi_communicator) << " s;";
     const ShiftedStiffnessSolver &linear = increment_solver.get_linear_solver();
     pcout << " (within the solves: AMG set-up = "
-          << Utilities::MPI::max(linear.amg_setup_seconds, mpi_communicator)
+          << Utilities::MPI::max(linear.amg_setup_wall_time(), mpi_communicator)
           << " s; Krylov solves = "
           << Utilities::MPI::max(linear.krylov_seconds, mpi_communicator)
           << " s;)";

@@ -138,18 +138,18 @@ namespace FrictionalContact
      */
     template <int dim>
     unsigned int
-    solve_linearized(const IncrementalProblem<dim>        &problem,
-                     const ActiveSets<dim>                &sets,
-                     const NodeProjection<dim>            &P,
-                     const ConditionPreconditioner<dim>   &preconditioner,
-                     ShiftedStiffnessSolver               &linear_solver,
-                     const double                   mu_k,
-                     const double                   reduction,
-                     const double                   floor,
-                     TrilinosWrappers::MPI::Vector &du,
-                     TrilinosWrappers::MPI::Vector &K_du,
-                     TrilinosWrappers::MPI::Vector &rhs,
-                     TrilinosWrappers::MPI::Vector &w)
+    solve_linearized(const IncrementalProblem<dim>      &problem,
+                     const ActiveSets<dim>              &sets,
+                     const NodeProjection<dim>          &P,
+                     const ConditionPreconditioner<dim> &preconditioner,
+                     ShiftedStiffnessSolver             &linear_solver,
+                     const double                        mu_k,
+                     const double                        reduction,
+                     const double                        floor,
+                     TrilinosWrappers::MPI::Vector      &du,
+                     TrilinosWrappers::MPI::Vector      &K_du,
+                     TrilinosWrappers::MPI::Vector      &rhs,
+                     TrilinosWrappers::MPI::Vector      &w)
     {
       const TrilinosWrappers::SparseMatrix &K = problem.stiffness;
       const bool any_slip = Utilities::MPI::logical_or(

@@ -254,7 +254,7 @@ namespace FrictionalContact
 
     // Near null space: the rigid-body modes, nodal blocks of dim dofs.
     const int          dim     = modes.size() == 3 ? 2 : 3;
-    const unsigned int n_modes = translations_only ? dim : modes.size();
+    const unsigned int n_modes = n_null_space_modes();
     Epetra_MultiVector null_space(matrix.trilinos_matrix().OperatorDomainMap(),
                                   n_modes);
     for (unsigned int m = 0; m < n_modes; ++m)
@@ -275,6 +275,15 @@ namespace FrictionalContact
 
 
 
+  unsigned int
+  ShiftedStiffnessSolver::n_null_space_modes() const
+  {
+    const unsigned int dim = modes.size() == 3 ? 2 : 3;
+    return translations_only ? dim : modes.size();
+  }
+
+
+
   SpringAMG &
   ShiftedStiffnessSolver::spring_preconditioner()
   {
@@ -282,13 +291,10 @@ namespace FrictionalContact
     // smoother the Newton method keeps the AMG of K.
     if (!spring_amg_tried && !use_jacobi(0.) && smoother_type == "Chebyshev")
       {
-        const auto  &amg = amg_for(0.);
-        const double before = spring_amg.setup_seconds;
-        const int dim = modes.size() == 3 ? 2 : 3;
+        const auto &amg = amg_for(0.);
         const std::vector<std::vector<double>> used_modes(
-          modes.begin(), modes.begin() + (translations_only ? dim : modes.size()));
+          modes.begin(), modes.begin() + n_null_space_modes());
         spring_amg.initialize(*stiffness, amg, used_modes, smoother_sweeps);
-        amg_setup_seconds += spring_amg.setup_seconds - before;
         spring_amg_tried = true;
       }
     return spring_amg;

@@ -256,42 +256,34 @@ namespace FrictionalContact
     // P_j^T B P_j with P_j the rows of P at the block's dofs, over the
     // coarse dofs those rows touch.
     const Epetra_Map &rows = K->trilinos_matrix().RowMap();
-    std::vector<int>  columns;
+    const Epetra_Map &coarse_columns = prolongator->ColMap();
+    std::vector<int>     lengths(n);
+    std::vector<double *> values(n);
+    std::vector<int *>    indices(n);
+    std::vector<int>      columns;
     for (unsigned int a = 0; a < n; ++a)
       {
-        int     length;
-        double *values;
-        int    *indices;
         prolongator->ExtractMyRowView(rows.LID(static_cast<int>(block.dofs[a])),
-                                      length,
-                                      values,
-                                      indices);
-        for (int k = 0; k < length; ++k)
-          columns.push_back(prolongator->ColMap().GID(indices[k]));
+                                      lengths[a],
+                                      values[a],
+                                      indices[a]);
+        for (int k = 0; k < lengths[a]; ++k)
+          columns.push_back(coarse_columns.GID(indices[a][k]));
       }
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     const unsigned int  m = columns.size();
     std::vector<double> rows_of_P(n * m, 0.);
     for (unsigned int a = 0; a < n; ++a)
-      {
-        int     length;
-        double *values;
-        int    *indices;
-        prolongator->ExtractMyRowView(rows.LID(static_cast<int>(block.dofs[a])),
-                                      length,
-                                      values,
-                                      indices);
-        for (int k = 0; k < length; ++k)
-          {
-            const auto position =
-              std::lower_bound(columns.begin(),
-                               columns.end(),
-                               prolongator->ColMap().GID(indices[k])) -
-              columns.begin();
-            rows_of_P[a * m + position] = values[k];
-          }
-      }
+      for (int k = 0; k < lengths[a]; ++k)
+        {
+          const auto position =
+            std::lower_bound(columns.begin(),
+                             columns.end(),
+                             coarse_columns.GID(indices[a][k])) -
+            columns.begin();
+          rows_of_P[a * m + position] = values[a][k];
+        }
     std::vector<double> product(m * m, 0.);
     for (unsigned int a = 0; a < n; ++a)
       for (unsigned int b = 0; b < n; ++b)

@@ -342,11 +342,11 @@ namespace FrictionalContact
     unsigned int
     solve_newton_system(const ContactStiffness<dim> &A,
                         const Preconditioner        &preconditioner,
-                        const bool                          non_symmetric,
-                        const unsigned int                  max_iterations,
-                        const double                        goal,
-                        const Vector                       &rhs,
-                        Vector                             &w)
+                        const bool                   non_symmetric,
+                        const unsigned int           max_iterations,
+                        const double                 goal,
+                        const Vector                &rhs,
+                        Vector                      &w)
     {
       SolverControl control(max_iterations, goal, false, false);
       w = 0;

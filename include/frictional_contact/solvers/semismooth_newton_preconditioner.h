@@ -84,9 +84,7 @@ namespace FrictionalContact
               blocks.emplace_back();
               contact.nodal_block(j, springs[j], blocks.back());
             }
-        const double seconds = amg->setup_seconds;
         amg->set_springs(blocks);
-        linear_solver.amg_setup_seconds += amg->setup_seconds - seconds;
         built = springs;
         return true;
       }

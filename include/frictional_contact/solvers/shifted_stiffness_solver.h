@@ -106,7 +106,15 @@ namespace FrictionalContact
     SpringAMG &
     spring_preconditioner();
 
-    /// How many times the AMG was set up, and the seconds it took.
+    /// Seconds of AMG set-ups: ML's of K and the Newton preconditioner's
+    /// (taken from it, and made again for each new set of springs).
+    double
+    amg_setup_wall_time() const
+    {
+      return amg_setup_seconds + spring_amg.setup_seconds;
+    }
+
+    /// How many times the AMG was set up, and the seconds ML's set-ups took.
     unsigned int n_amg_setups = 0;
     double       amg_setup_seconds = 0;
     /// Wall seconds in Krylov solves with K (the preconditioner's
@@ -120,6 +128,11 @@ namespace FrictionalContact
   private:
     bool
     use_jacobi(const double sigma) const;
+
+    /// How many of the rigid-body modes make the AMG's near null space:
+    /// all, or the dim translations (<AMG near null space>).
+    unsigned int
+    n_null_space_modes() const;
 
     /// An AMG hierarchy and the matrix K + sigma I it was built on.
     struct AMG

@@ -77,7 +77,8 @@ namespace FrictionalContact
     void
     vmult(Vector &dst, const Vector &src) const;
 
-    /// Seconds spent in initialize() and set_springs().
+    /// Seconds spent in initialize() and set_springs(), all of them (clear()
+    /// keeps the count).
     double setup_seconds = 0;
 
   private:
