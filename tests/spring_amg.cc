@@ -8,7 +8,10 @@
 //   as good as the AMG of K, which does not see the springs;
 // - it is symmetric (CG needs that): (x, M y) = (y, M x) to 1e-12;
 // - springs in rotated local frames (a sphere's) give the same nodal
-//   blocks as T_j B T_j^T computed by hand.
+//   blocks as T_j B T_j^T computed by hand;
+// - K stored in single-precision nodal blocks (NodalBlockMatrix, whose
+//   products the V-cycle's fine level takes) multiplies as K does, to
+//   single precision.
 // Only true/false is printed, so the output holds for any BLAS and rank
 // count.
 #include <deal.II/base/mpi.h>
@@ -16,6 +19,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <frictional_contact/driver/simulator.h>
+#include <frictional_contact/solvers/nodal_block_matrix.h>
 #include <frictional_contact/solvers/shifted_stiffness_solver.h>
 #include <frictional_contact/solvers/spring_amg.h>
 
@@ -178,6 +182,14 @@ main(int argc, char *argv[])
     }
   block_defect = Utilities::MPI::max(block_defect, MPI_COMM_WORLD);
 
+  const NodalBlockMatrix K_in_blocks(K, 3);
+  TrilinosVector         Kx(x), difference(x);
+  K.vmult(Kx, x);
+  if (!K_in_blocks.empty())
+    K_in_blocks.vmult(difference, x);
+  difference -= Kx;
+  const double block_product_error = difference.l2_norm() / Kx.l2_norm();
+
   if (root)
     std::cout << std::boolalpha << "two levels: " << spring_amg.initialized()
               << std::endl
@@ -190,6 +202,9 @@ main(int argc, char *argv[])
               << (2 * ours_sprung <= ml_blind) << std::endl
               << "symmetric: " << (asymmetry < 1e-12) << std::endl
               << "nodal blocks are T_j B T_j^T: " << (block_defect < 1e-12)
-              << std::endl;
+              << std::endl
+              << "K in nodal blocks: " << !K_in_blocks.empty() << std::endl
+              << "K in nodal blocks multiplies as K (to 1e-6): "
+              << (block_product_error < 1e-6) << std::endl;
   return 0;
 }

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/solvers/nodal_block_matrix.h>
 #include <frictional_contact/solvers/spring_amg.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -58,6 +59,7 @@ namespace FrictionalContact
   SpringAMG::clear()
   {
     K = nullptr;
+    fine_blocks.reset();
     coarse_solver.reset();
     coarse_matrix.reset();
     galerkin_matrix.reset();
@@ -126,6 +128,13 @@ namespace FrictionalContact
     coarse_matrix->FillComplete(galerkin_matrix->DomainMap(),
                                 galerkin_matrix->RangeMap());
 
+    if (two_levels)
+      {
+        fine_blocks = std::make_unique<NodalBlockMatrix>(
+          stiffness, list.get("PDE equations", 1));
+        if (fine_blocks->empty())
+          fine_blocks.reset();
+      }
     diagonal_of_K.reinit(stiffness.locally_owned_range_indices(),
                          stiffness.get_mpi_communicator());
     for (const auto i : stiffness.locally_owned_range_indices())
@@ -304,7 +313,10 @@ namespace FrictionalContact
   void
   SpringAMG::apply_matrix(Vector &dst, const Vector &src) const
   {
-    K->vmult(dst, src);
+    if (fine_blocks)
+      fine_blocks->vmult(dst, src);
+    else
+      K->vmult(dst, src);
     const double *x = src.begin();
     double       *y = dst.begin();
     for (unsigned int k = 0; k < spring_values.size(); ++k)

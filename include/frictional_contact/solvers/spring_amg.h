@@ -24,6 +24,8 @@ namespace FrictionalContact
 {
   using namespace dealii;
 
+  class NodalBlockMatrix;
+
   /**
    * An AMG V-cycle for K + S, where S is a sum of small symmetric blocks on
    * the dofs of single nodes (the stiff springs that stand for the node
@@ -34,8 +36,10 @@ namespace FrictionalContact
    * A_1 + P^T S P (only the rows of P at the springs' nodes enter) and an
    * ML hierarchy for it, which is about a tenth of the size of K; the fine
    * level smooths K + S itself (Chebyshev, as ML does, with the diagonal of
-   * K + S). Without springs the cycle is ML's own. Owns the copies of P and
-   * A_1, the coarse hierarchy and the springs.
+   * K + S), with K's products taken in single-precision nodal blocks
+   * (NodalBlockMatrix) where K allows. Without springs the cycle is ML's
+   * own. Owns the copies of P, A_1 and K, the coarse hierarchy and the
+   * springs.
    */
   class SpringAMG
   {
@@ -112,6 +116,9 @@ namespace FrictionalContact
     smooth(Vector &x, Vector &r) const;
 
     const TrilinosWrappers::SparseMatrix *K = nullptr;
+    /// K in nodal blocks, for the fine level's products; null where K's
+    /// dofs are not grouped by node.
+    std::unique_ptr<NodalBlockMatrix>     fine_blocks;
     unsigned int                          degree = 2;
     double                                lambda_max = 0;
 
