@@ -124,12 +124,12 @@ namespace FrictionalContact
 
 
 
+  template <typename EntryFunction>
   void
-  NodalBlockMatrix::couple_block_row(const int node)
+  NodalBlockMatrix::for_each_entry(const int node, EntryFunction &&f) const
   {
-    const Epetra_CrsMatrix &A     = matrix.trilinos_matrix();
-    const int               n     = block_size;
-    const std::size_t       first = block_columns.size();
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    const int               n = block_size;
     for (int a = 0; a < n; ++a)
       {
         int     length;
@@ -137,8 +137,20 @@ namespace FrictionalContact
         int    *indices;
         A.ExtractMyRowView(node * n + a, length, row_values, indices);
         for (int k = 0; k < length; ++k)
-          block_columns.push_back(column_position[indices[k]] / n);
+          f(a, column_position[indices[k]], row_values[k]);
       }
+  }
+
+
+
+  void
+  NodalBlockMatrix::couple_block_row(const int node)
+  {
+    const int         n     = block_size;
+    const std::size_t first = block_columns.size();
+    for_each_entry(node, [&](int, const int position, double) {
+      block_columns.push_back(position / n);
+    });
     std::sort(block_columns.begin() + first, block_columns.end());
     block_columns.erase(std::unique(block_columns.begin() + first,
                                     block_columns.end()),
@@ -151,25 +163,14 @@ namespace FrictionalContact
   void
   NodalBlockMatrix::copy_block_row(const int node)
   {
-    const Epetra_CrsMatrix &A     = matrix.trilinos_matrix();
-    const int               n     = block_size;
-    const auto              first = block_columns.begin() + offsets[node];
-    const auto              last  = block_columns.begin() + offsets[node + 1];
-    for (int a = 0; a < n; ++a)
-      {
-        int     length;
-        double *row_values;
-        int    *indices;
-        A.ExtractMyRowView(node * n + a, length, row_values, indices);
-        for (int k = 0; k < length; ++k)
-          {
-            const std::size_t block =
-              std::lower_bound(first, last, column_position[indices[k]] / n) -
-              block_columns.begin();
-            values[block * n * n + a * n + column_position[indices[k]] % n] =
-              row_values[k];
-          }
-      }
+    const int  n     = block_size;
+    const auto first = block_columns.begin() + offsets[node];
+    const auto last  = block_columns.begin() + offsets[node + 1];
+    for_each_entry(node, [&](const int a, const int position, const double value) {
+      const std::size_t block =
+        std::lower_bound(first, last, position / n) - block_columns.begin();
+      values[block * n * n + a * n + position % n] = value;
+    });
   }
 
 

@@ -58,6 +58,12 @@ namespace FrictionalContact
     void
     number_column_nodes();
 
+    /// Calls f(row component, position in the vector by nodes, value) for
+    /// every entry of the rows of block row @p node.
+    template <typename EntryFunction>
+    void
+    for_each_entry(const int node, EntryFunction &&f) const;
+
     /// Appends the nodes block row @p node couples to (zero blocks where
     /// some of its rows have no entry) and its offset.
     void
@@ -70,8 +76,8 @@ namespace FrictionalContact
     const TrilinosWrappers::SparseMatrix &matrix;
     unsigned int                          block_size = 0;
     /// Block row i has the blocks offsets[i] to offsets[i + 1] - 1, each
-    /// with the node of its columns (in the column map) and its values
-    /// (row-major).
+    /// with the node of its columns (numbered as in column_position) and
+    /// its values (row-major).
     std::vector<int>                       offsets, block_columns;
     std::vector<Number>                    values;
     /// Column l of the matrix is entry column_position[l] of the vector
