@@ -140,6 +140,17 @@ namespace
     else
       fclib.solve(options.solution);
   }
+  /// Prints the one error line on the root rank. Standard output is flushed
+  /// first and the line goes out in a single write, so that mpirun, which
+  /// forwards the two streams separately, cannot split it.
+  void
+  report_error(const bool is_root, const std::string &message)
+  {
+    if (!is_root)
+      return;
+    std::cout.flush();
+    std::cerr << ("Error: " + message + "\n") << std::flush;
+  }
 } // namespace
 
 
@@ -240,37 +251,30 @@ main(int argc, char *argv[])
     }
   catch (const InputError &e)
     {
-      if (is_root)
-        std::cerr << "Error: " << e.what() << std::endl;
+      report_error(is_root, e.what());
       return 1;
     }
   catch (const SolverError &e)
     {
-      if (is_root)
-        std::cerr << "Error: the solve failed: " << e.what() << std::endl;
+      report_error(is_root, std::string("the solve failed: ") + e.what());
       return 2;
     }
   catch (const NonFiniteInput &e)
     {
-      if (is_root)
-        std::cerr << "Error: " << e.what() << std::endl;
+      report_error(is_root, e.what());
       return 2;
     }
   catch (const ExceptionBase &e)
     {
       // Errors of deal.II's ParameterHandler name the file, line and entry.
-      if (is_root)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          std::cerr << "Error: " << Input::one_line(info.str()) << std::endl;
-        }
+      std::ostringstream info;
+      e.print_info(info);
+      report_error(is_root, Input::one_line(info.str()));
       return 1;
     }
   catch (const std::exception &e)
     {
-      if (is_root)
-        std::cerr << "Error: " << Input::one_line(e.what()) << std::endl;
+      report_error(is_root, Input::one_line(e.what()));
       return 3;
     }
   return 0;

@@ -68,7 +68,7 @@ endforeach()
 set(_directory ${CMAKE_CURRENT_BINARY_DIR}/errors/write_fails_mid_run)
 file(MAKE_DIRECTORY ${_directory})
 add_test(NAME errors/write_fails_mid_run.mpirun=2
-  COMMAND sh -c "rm -rf out && mkdir out && touch out/solution && printf 'include ${PROJECT_SOURCE_DIR}/parameters/example1.prm\\nset Output directory = out\\n' > scene.prm && timeout 120 mpirun -np 2 $<TARGET_FILE:contact> scene.prm > output.raw 2>&1; code=$?; cat output.raw; test $code -eq 1 && test $(grep -c '^Error: cannot write the output' output.raw) -eq 1 && echo 'failed as expected, on both ranks'"
+  COMMAND sh -c "rm -rf out && mkdir out && touch out/solution && printf 'include ${PROJECT_SOURCE_DIR}/parameters/example1.prm\\nset Output directory = out\\n' > scene.prm && timeout 120 mpirun -np 2 $<TARGET_FILE:contact> scene.prm > output.raw 2> errors.raw; code=$?; cat output.raw errors.raw; test $code -eq 1 && test $(grep -c '^Error: cannot write the output' errors.raw) -eq 1 && echo 'failed as expected, on both ranks'"
   WORKING_DIRECTORY ${_directory})
 set_tests_properties(errors/write_fails_mid_run.mpirun=2 PROPERTIES
   ENVIRONMENT "${_environment}" PROCESSORS 2)

@@ -86,9 +86,10 @@ EOT
 echo "the resumed run ends where the uninterrupted one does"
 
 # A finished run's checkpoint is of its last increment: nothing to resume.
-mpirun -np 2 "$contact" resume.prm > finished.log 2>&1; code=$?
-grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" finished.log \
-  && [ $code -eq 1 ] || { cat finished.log; fail "resuming a finished run (exit code $code)"; }
+# (mpirun forwards standard output and error apart: the error is read alone.)
+mpirun -np 2 "$contact" resume.prm > finished.log 2> finished.err; code=$?
+grep -q "^Error: .*is of the last increment (20 of 20): the run is complete" finished.err \
+  && [ $code -eq 1 ] || { cat finished.log finished.err; fail "resuming a finished run (exit code $code)"; }
 # Resume computation = auto finds that checkpoint too.
 printf "include killed.prm\nset Resume computation = auto\n" > auto.prm
 "$contact" auto.prm > auto.log 2>&1; code=$?
@@ -107,10 +108,10 @@ for file in mesh_fixed.data mesh state; do
   size=$(stat -c %s out-killed/checkpoint/$file)
   truncate -s $((size / 2)) out-killed/checkpoint/$file
   for ranks in 1 2; do
-    mpirun -np $ranks "$contact" resume.prm > damaged.log 2>&1; code=$?
-    grep -q "^Error: .*has a damaged file '$file'" damaged.log && [ $code -eq 1 ] \
-      && [ "$(grep -c '^Error' damaged.log)" -eq 1 ] \
-      || { cat damaged.log; fail "a truncated $file was not refused on $ranks rank(s)"; }
+    mpirun -np $ranks "$contact" resume.prm > damaged.log 2> damaged.err; code=$?
+    grep -q "^Error: .*has a damaged file '$file'" damaged.err && [ $code -eq 1 ] \
+      && [ "$(cat damaged.log damaged.err | grep -c '^Error')" -eq 1 ] \
+      || { cat damaged.log damaged.err; fail "a truncated $file was not refused on $ranks rank(s)"; }
   done
   rm -rf out-killed/checkpoint; mv saved out-killed/checkpoint
 done
