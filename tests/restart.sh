@@ -32,8 +32,11 @@ kill_when() {
     "${launcher[@]}" "$contact" "$3" || fail "could not kill the run on $2 rank(s)"
 }
 
-"$contact" whole.prm > whole.log 2>&1 || fail "the uninterrupted run failed"
+# The uninterrupted run beside the first killed one (both on 1 rank).
+"$contact" whole.prm > whole.log 2>&1 &
+whole=$!
 kill_when 4 1 killed.prm
+wait $whole || { cat whole.log; fail "the uninterrupted run failed"; }
 kill_when 12 2 resume.prm
 grep -q "Resuming after increment" killed-12.log || { cat killed-12.log; fail "the first resume did not resume"; }
 mpirun -np 3 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }

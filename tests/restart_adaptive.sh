@@ -39,12 +39,16 @@ EOT
 done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm
 
-"$contact" whole.prm > whole.log 2>&1 || { cat whole.log; fail "the uninterrupted run failed"; }
+# The uninterrupted run and the run that is killed, side by side (the test
+# holds two processors for the resumed run on 2 ranks).
+"$contact" whole.prm > whole.log 2>&1 &
+whole=$!
+"$source_dir/tests/kill_when.sh" 2 out-killed/statistics killed.log "$contact" killed.prm \
+  || fail "could not kill the run"
+wait $whole || { cat whole.log; fail "the uninterrupted run failed"; }
 grep -q "mesh refinement 1" whole.log || fail "the mesh was not adapted"
 "$python" "$source_dir/tests/check_analytic.py" cattaneo out-whole --rows 2-3 \
   || fail "the stick zone on the adapted mesh is not Mindlin's"
-"$source_dir/tests/kill_when.sh" 2 out-killed/statistics killed.log "$contact" killed.prm \
-  || fail "could not kill the run"
 mpirun -np 2 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }
 grep "Resuming after increment" resume.log || fail "the run did not resume"
 
