@@ -140,6 +140,9 @@ namespace
     else
       fclib.solve(options.solution);
   }
+
+
+
   /// Prints the one error line on the root rank. Standard output is flushed
   /// first and the line goes out in a single write, so that mpirun, which
   /// forwards the two streams separately, cannot split it.

@@ -105,6 +105,7 @@ namespace FrictionalContact
     const int         n_rows  = matrix.trilinos_matrix().NumMyRows();
     std::unordered_map<long long, int> ghost_nodes;
     column_position.resize(columns.NumMyElements());
+    columns_in_place = true;
     for (int l = 0; l < columns.NumMyElements(); ++l)
       {
         const long long global = columns.GID64(l);
@@ -114,10 +115,8 @@ namespace FrictionalContact
                    .emplace(global / n, n_rows / n + ghost_nodes.size())
                    .first->second;
         column_position[l] = n * node + global % n;
+        columns_in_place   = columns_in_place && column_position[l] == l;
       }
-    columns_in_place = true;
-    for (int l = 0; l < columns.NumMyElements(); ++l)
-      columns_in_place = columns_in_place && column_position[l] == l;
     if (!columns_in_place)
       by_node.assign(n * (n_rows / n + ghost_nodes.size()), 0.);
   }
