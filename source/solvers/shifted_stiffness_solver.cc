@@ -265,6 +265,9 @@ namespace FrictionalContact
     parameters.set("null space: type", "pre-computed");
     parameters.set("null space: dimension", static_cast<int>(n_modes));
     parameters.set("null space: vectors", null_space.Values());
+    // The list is deal.II's and ours, known to be valid: checking it took
+    // ML 2 to 3 ms per hierarchy, an eighth of an update at d = 7,260.
+    parameters.set("ML validate parameter list", false);
 
     amg.preconditioner.initialize(matrix, parameters);
     amg.sigma = sigma;

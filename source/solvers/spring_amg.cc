@@ -3,8 +3,12 @@
 #include <frictional_contact/solvers/nodal_block_matrix.h>
 #include <frictional_contact/solvers/spring_amg.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_FECrsMatrix.h>
+#include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Epetra_Vector.h>
 #include <ml_MultiLevelPreconditioner.h>
@@ -45,6 +49,24 @@ namespace FrictionalContact
       ML_Operator2EpetraCrsMatrix(op, matrix);
       return std::unique_ptr<Epetra_CrsMatrix>(matrix);
     }
+
+    /// Amesos's name of ML's direct solver of the coarsest level and the
+    /// largest level it takes, as ML keeps them in @p parameters once it
+    /// has read them ("coarse: list"); "" for another kind of solver.
+    std::pair<std::string, int>
+    coarsest_solver(const Teuchos::ParameterList &parameters)
+    {
+      if (!parameters.isSublist("coarse: list"))
+        return {"", 0};
+      Teuchos::ParameterList coarse = parameters.sublist("coarse: list");
+      const std::string type = coarse.get("smoother: type", std::string());
+      const int max_size     = coarse.get("smoother: max size", 0);
+      if (type == "Amesos-KLU")
+        return {"Amesos_Klu", max_size};
+      if (type == "Amesos-MUMPS")
+        return {"Amesos_Mumps", max_size};
+      return {"", 0};
+    }
   } // namespace
 
 
@@ -61,6 +83,8 @@ namespace FrictionalContact
     K = nullptr;
     fine_blocks.reset();
     coarse_solver.reset();
+    direct_solver.reset();
+    direct_problem.reset();
     coarse_matrix.reset();
     galerkin_matrix.reset();
     prolongator.reset();
@@ -127,6 +151,20 @@ namespace FrictionalContact
       std::make_unique<Epetra_FECrsMatrix>(Copy, galerkin_matrix->Graph());
     coarse_matrix->FillComplete(galerkin_matrix->DomainMap(),
                                 galerkin_matrix->RangeMap());
+    // A coarse matrix at most ML's coarsest size ML would only factor; its
+    // graph stays, so one symbolic analysis serves every new S (a third of
+    // each update's MUMPS time at d = 7,260, doc/performance.md).
+    const auto [direct_name, direct_max_size] = coarsest_solver(list);
+    if (!direct_name.empty() &&
+        coarse_matrix->NumGlobalRows64() <= direct_max_size)
+      {
+        direct_problem = std::make_unique<Epetra_LinearProblem>();
+        direct_problem->SetOperator(coarse_matrix.get());
+        Amesos factory;
+        direct_solver.reset(factory.Create(direct_name, *direct_problem));
+        if (auto *mumps = dynamic_cast<Amesos_Mumps *>(direct_solver.get()))
+          mumps->SetICNTL(8, 0);
+      }
 
     if (two_levels)
       {
@@ -210,10 +248,46 @@ namespace FrictionalContact
     for (const NodalBlock &block : springs)
       add_coarse_spring(block);
     coarse_matrix->GlobalAssemble(false);
+    update_coarse_solver();
+    setup_seconds += timer.wall_time();
+  }
+
+
+
+  void
+  SpringAMG::update_coarse_solver()
+  {
+    if (direct_solver)
+      {
+        // The first call also analyses the graph. Should a factorization
+        // fail, ML's hierarchy takes over as it would without this path.
+        const int error = direct_solver->NumericFactorization();
+        if (dealii::Utilities::MPI::max(error != 0 ? 1 : 0,
+                                K->get_mpi_communicator()) == 0)
+          return;
+        direct_solver.reset();
+        direct_problem.reset();
+      }
     coarse_solver.reset();
     coarse_solver = std::make_unique<ML_Epetra::MultiLevelPreconditioner>(
       *coarse_matrix, coarse_parameters);
-    setup_seconds += timer.wall_time();
+  }
+
+
+
+  void
+  SpringAMG::solve_coarse(const Epetra_Vector &b, Epetra_Vector &x) const
+  {
+    if (!direct_solver)
+      {
+        coarse_solver->ApplyInverse(b, x);
+        return;
+      }
+    direct_problem->SetRHS(const_cast<Epetra_Vector *>(&b));
+    direct_problem->SetLHS(&x);
+    const int error = direct_solver->Solve();
+    (void)error;
+    Assert(error == 0, LACExceptions::ExcTrilinosError(error));
   }
 
 
@@ -386,7 +460,7 @@ namespace FrictionalContact
       {
         const Epetra_Vector b = view(coarse_matrix->RangeMap(), src);
         Epetra_Vector       x = view(coarse_matrix->DomainMap(), dst);
-        coarse_solver->ApplyInverse(b, x);
+        solve_coarse(b, x);
         return;
       }
     // Pre-smoothing.
@@ -397,7 +471,7 @@ namespace FrictionalContact
     residual_of(dst, src);
     const Epetra_Vector fine_residual = view(prolongator->RangeMap(), residual);
     prolongator->Multiply(true, fine_residual, *coarse_residual);
-    coarse_solver->ApplyInverse(*coarse_residual, *coarse_correction);
+    solve_coarse(*coarse_residual, *coarse_correction);
     Epetra_Vector fine_correction = view(prolongator->RangeMap(), scratch);
     prolongator->Multiply(false, *coarse_correction, fine_correction);
     dst += scratch;

@@ -11,8 +11,10 @@
 #include <memory>
 #include <vector>
 
+class Amesos_BaseSolver;
 class Epetra_CrsMatrix;
 class Epetra_FECrsMatrix;
+class Epetra_LinearProblem;
 class Epetra_MultiVector;
 class Epetra_Vector;
 namespace ML_Epetra
@@ -34,7 +36,9 @@ namespace FrictionalContact
    * its first prolongator P, its first coarse operator A_1 = P^T K P and the
    * rigid-body modes on that level. A new S then costs the coarse operator
    * A_1 + P^T S P (only the rows of P at the springs' nodes enter) and an
-   * ML hierarchy for it, which is about a tenth of the size of K; the fine
+   * ML hierarchy for it, which is about a tenth of the size of K (or, when
+   * A_1 is small enough for ML to factor it directly, a new numerical
+   * factorization that keeps the first one's symbolic analysis); the fine
    * level smooths K + S itself (Chebyshev, as ML does, with the diagonal of
    * K + S), with K's products taken in single-precision nodal blocks
    * (NodalBlockMatrix) where K allows. Without springs the cycle is ML's
@@ -98,6 +102,14 @@ namespace FrictionalContact
     void
     set_fine_springs(const std::vector<NodalBlock> &springs);
 
+    /// Makes the solver of the coarse matrix for its current values.
+    void
+    update_coarse_solver();
+
+    /// x = the coarse matrix's inverse (or ML's V-cycle for it) applied to b.
+    void
+    solve_coarse(const Epetra_Vector &b, Epetra_Vector &x) const;
+
     /// coarse matrix += P^T B P for the block B (B itself on one level).
     void
     add_coarse_spring(const NodalBlock &block);
@@ -128,6 +140,10 @@ namespace FrictionalContact
     std::unique_ptr<Epetra_MultiVector> coarse_null_space;
     unsigned int                        coarse_block_size = 0;
     std::unique_ptr<ML_Epetra::MultiLevelPreconditioner> coarse_solver;
+    /// The direct solver (Amesos) of a coarse matrix that ML would only
+    /// factor, with its problem; null otherwise.
+    std::unique_ptr<Epetra_LinearProblem> direct_problem;
+    std::unique_ptr<Amesos_BaseSolver>    direct_solver;
     Teuchos::ParameterList              coarse_parameters;
     double                              chebyshev_ratio = 20;
 
