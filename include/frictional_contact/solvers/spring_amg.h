@@ -73,6 +73,14 @@ namespace FrictionalContact
       return coarse_matrix != nullptr;
     }
 
+    /// Whether the first coarse level is factored directly (it has no more
+    /// rows than ML's coarsest level) rather than given an ML hierarchy.
+    bool
+    factors_first_coarse_level() const
+    {
+      return direct_solver != nullptr;
+    }
+
     /// Frees everything (before K changes).
     void
     clear();
