@@ -205,18 +205,17 @@ namespace
     const auto near   = [direct](const unsigned int ours, const unsigned int ml) {
       return direct ? ours <= ml + 3 : 5 * ours <= 8 * ml + 10;
     };
+    const std::string band = direct ? "within 3" : "at most 1.6 times + 2";
     if (root)
       std::cout << std::boolalpha << "N_Y = " << n_y << std::endl
                 << "two levels: " << spring_amg.initialized() << std::endl
                 << "first coarse level factored directly: " << direct
                 << std::endl
-                << "without springs, as ML's V-cycle ("
-                << (direct ? "within 3" : "at most 1.6 times + 2")
+                << "without springs, as ML's V-cycle (" << band
                 << " iterations): "
                 << (near(ours_plain, ml_plain) && ml_plain <= ours_plain + 3)
                 << std::endl
-                << "with springs, as ML built anew on K + S ("
-                << (direct ? "within 3" : "at most 1.6 times + 2")
+                << "with springs, as ML built anew on K + S (" << band
                 << "): " << near(ours_sprung, ml_rebuilt) << std::endl
                 << "with springs, at most half the iterations of the AMG of K: "
                 << (2 * ours_sprung <= ml_blind) << std::endl

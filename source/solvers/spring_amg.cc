@@ -150,9 +150,9 @@ namespace FrictionalContact
       std::make_unique<Epetra_FECrsMatrix>(Copy, galerkin_matrix->Graph());
     coarse_matrix->FillComplete(galerkin_matrix->DomainMap(),
                                 galerkin_matrix->RangeMap());
-    // A coarse matrix at most ML's coarsest size ML would only factor; its
-    // graph stays, so one symbolic analysis serves every new S (a third of
-    // each update's MUMPS time at d = 7,260, doc/performance.md).
+    // ML would only factor a coarse matrix no larger than its coarsest
+    // level, and its graph stays: one symbolic analysis serves every new S
+    // (a third of each update's MUMPS time at d = 7,260, doc/performance.md).
     const auto [direct_name, direct_max_size] = coarsest_solver(list);
     if (!direct_name.empty() &&
         coarse_matrix->NumGlobalRows64() <= direct_max_size)
@@ -287,8 +287,7 @@ namespace FrictionalContact
       }
     direct_problem->SetRHS(const_cast<Epetra_Vector *>(&b));
     direct_problem->SetLHS(&x);
-    const int error = direct_solver->Solve();
-    (void)error;
+    [[maybe_unused]] const int error = direct_solver->Solve();
     Assert(error == 0, LACExceptions::ExcTrilinosError(error));
   }
 
