@@ -19,6 +19,12 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 folder="${1:-doc/benchmarks}"
 mkdir -p "$folder"
 rm -f "$folder/scale.csv" "$folder/solver-settings.csv" "$folder/parallel.csv"
+# The plots need Debian's python3-matplotlib: a python3 first on PATH
+# without it (pyenv, a virtualenv) would lose them at the end of the run.
+plot_python=python3
+if ! python3 -c "import matplotlib" 2>/dev/null && [ -x /usr/bin/python3 ]; then
+  plot_python=/usr/bin/python3
+fi
 
 echo "== how the cost grows with d"
 python3 bench/run_series.py --series ex2 --solvers newton \
@@ -39,4 +45,4 @@ python3 bench/parallel_efficiency.py --sizes 28 --repeat 3 \
   --csv "$folder/parallel.csv"
 
 echo "== tables and performance.png"
-python3 bench/plot_performance.py "$folder"
+"$plot_python" bench/plot_performance.py "$folder"
