@@ -270,6 +270,8 @@ namespace FrictionalContact
       DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
     Vector gap(scalar_owned, comm), state(scalar_owned, comm),
       pressure(scalar_owned, comm);
+    // Each owned vertex once, not once per cell around it.
+    std::vector<bool> vertex_done(scalar_owned.n_elements(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -280,6 +282,10 @@ namespace FrictionalContact
               const auto s = scalar_cell->vertex_dof_index(v, 0);
               if (!scalar_owned.is_element(s))
                 continue;
+              const auto position = scalar_owned.index_within_set(s);
+              if (vertex_done[position])
+                continue;
+              vertex_done[position] = true;
               const auto it = candidate.find(cell->vertex_dof_index(v, 0));
               if (it != candidate.end())
                 {
