@@ -32,7 +32,10 @@ namespace FrictionalContact
   {
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
-    linear_solver.initialize(body.stiffness_matrix(), body.rigid_body_modes());
+    linear_solver.initialize(body.stiffness_matrix(),
+                             body.rigid_body_modes(),
+                             0.,
+                             body.volumetric_split());
     mu_pi = 0;
     if (contact.active())
       sigma_T = contact.largest_singular_value();

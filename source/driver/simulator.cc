@@ -256,7 +256,7 @@ namespace FrictionalContact
     Postprocess::print_increment(pcout,
                                  result,
                                  increment_solver.iteration_name(),
-                                 increment_solver.last_preconditioner());
+                                 increment_solver.last_linear_solve());
     if (result.last())
       Postprocess::print_final_state(pcout, result);
 

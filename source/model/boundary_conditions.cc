@@ -35,6 +35,14 @@ namespace FrictionalContact
       Patterns::Anything(),
       "Surface tractions (force/area), separated by ';', each as "
       "'boundary: t_x, t_y[, t_z]'. Example: 'top: 0, -0.01'.");
+    prm.declare_entry(
+      "Pressure",
+      "",
+      Patterns::Anything(),
+      "Pressures (force/area) normal to boundaries, pushing against the "
+      "outward normal (a negative value pulls), separated by ';', each as "
+      "'boundary: p'; they follow curved boundaries and scale with the load "
+      "factor like the tractions. Example: 'inner: 0.01'.");
     prm.declare_entry("Body force",
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
@@ -135,6 +143,18 @@ namespace FrictionalContact
           names.id(traction_entry, Input::trim(item.substr(0, colon)));
         tractions[id] += Input::parse_vector<dim>(traction_entry,
                                                   item.substr(colon + 1));
+      }
+
+    const std::string pressure_entry = "Boundary conditions/Pressure";
+    for (const std::string &item : Input::split(prm.get("Pressure"), ';'))
+      {
+        const std::size_t colon = item.find(':');
+        if (colon == std::string::npos)
+          Input::fail(pressure_entry, item, "expected 'boundary: p'");
+        const types::boundary_id id =
+          names.id(pressure_entry, Input::trim(item.substr(0, colon)));
+        pressures[id] += Input::parse_vector<1>(pressure_entry,
+                                                item.substr(colon + 1))[0];
       }
 
     body_force = Input::parse_vector<dim>("Boundary conditions/Body force",

@@ -22,6 +22,7 @@ namespace FrictionalContact
     , mpi_communicator(triangulation.get_communicator())
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
+    , volumetric(material)
   {}
 
 
@@ -97,6 +98,7 @@ namespace FrictionalContact
     sparsity.compress();
     stiffness.reinit(sparsity);
     load.reinit(owned_dofs, mpi_communicator);
+    volumetric.setup(dof_handler, constraints, stiffness);
   }
 
 
@@ -108,10 +110,13 @@ namespace FrictionalContact
     , fe_values(fe,
                 quadrature,
                 update_values | update_gradients | update_JxW_values)
-    , fe_face_values(fe, face_quadrature, update_values | update_JxW_values)
+    , fe_face_values(fe,
+                     face_quadrature,
+                     update_values | update_normal_vectors | update_JxW_values)
     , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , cell_load(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
+    , divergence_integral(fe.n_dofs_per_cell())
   {}
 
 
@@ -134,36 +139,61 @@ namespace FrictionalContact
     cell_matrix = 0;
     cell_load   = 0;
     std::vector<SymmetricTensor<2, dim>> strain(dofs_per_cell);
+    // B-bar: the shear part at the Gauss points, the volumetric part from
+    // the cell integrals of div phi_i (the mean dilatation).
+    std::vector<double> &divergence_integral = scratch.divergence_integral;
+    double              &volume              = scratch.volume;
+    std::fill(divergence_integral.begin(), divergence_integral.end(), 0.);
+    volume = 0;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           strain[i] = fe_values[displacement].symmetric_gradient(i, q);
         const double JxW = fe_values.JxW(q);
+        volume += JxW;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            const SymmetricTensor<2, dim> stress_i = C * strain[i];
+            const SymmetricTensor<2, dim> stress_i =
+              material.mean_dilatation ?
+                material.stress(strain[i], 0.) :
+                SymmetricTensor<2, dim>(C * strain[i]);
+            divergence_integral[i] += trace(strain[i]) * JxW;
             for (unsigned int j = 0; j <= i; ++j)
               cell_matrix(i, j) += (stress_i * strain[j]) * JxW;
             cell_load(i) +=
               conditions.body_force * fe_values[displacement].value(i, q) * JxW;
           }
       }
+    if (material.mean_dilatation)
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        for (unsigned int j = 0; j <= i; ++j)
+          cell_matrix(i, j) += material.bulk_modulus * divergence_integral[i] *
+                               divergence_integral[j] / volume;
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
 
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())
-        if (const auto t = conditions.tractions.find(face->boundary_id());
-            t != conditions.tractions.end())
-          {
-            fe_face_values.reinit(cell, face);
-            for (const unsigned int q : fe_face_values.quadrature_point_indices())
+        {
+          const auto t = conditions.tractions.find(face->boundary_id());
+          const auto p = conditions.pressures.find(face->boundary_id());
+          if (t == conditions.tractions.end() && p == conditions.pressures.end())
+            continue;
+          fe_face_values.reinit(cell, face);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            {
+              Tensor<1, dim> traction;
+              if (t != conditions.tractions.end())
+                traction += t->second;
+              if (p != conditions.pressures.end())
+                traction -= p->second * fe_face_values.normal_vector(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_load(i) += t->second *
+                cell_load(i) += traction *
                                 fe_face_values[displacement].value(i, q) *
                                 fe_face_values.JxW(q);
-          }
+            }
+        }
   }
 
 
@@ -177,6 +207,7 @@ namespace FrictionalContact
 
     stiffness = 0;
     load      = 0;
+    volumetric.start_assembly();
     Tensor<1, dim> total_here;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -186,6 +217,13 @@ namespace FrictionalContact
             total_here[fe.system_to_component_index(i).first] +=
               scratch.cell_load(i);
           cell->get_dof_indices(scratch.dof_indices);
+          if (volumetric.active())
+            volumetric.add_cell(cell,
+                                scratch.cell_matrix,
+                                scratch.divergence_integral,
+                                scratch.volume,
+                                scratch.dof_indices,
+                                constraints);
           constraints.distribute_local_to_global(scratch.cell_matrix,
                                                  scratch.cell_load,
                                                  scratch.dof_indices,
@@ -193,6 +231,7 @@ namespace FrictionalContact
                                                  load);
         }
     stiffness.compress(VectorOperation::add);
+    volumetric.finish_assembly(stiffness, constraints);
     load.compress(VectorOperation::add);
     reference_total_load = Utilities::MPI::sum(total_here, mpi_communicator);
   }
@@ -308,6 +347,33 @@ namespace FrictionalContact
             increment[dof] = value;
       }
     increment.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  dealii::Vector<double>
+  ElasticBody<dim>::mean_volumetric_strain(const Vector &u_ghosted) const
+  {
+    QGauss<dim>            quadrature(2);
+    FEValues<dim>          fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<double>    divergence(quadrature.size());
+    dealii::Vector<double> theta(dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_divergences(u_ghosted, divergence);
+          double integral = 0, volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              integral += divergence[q] * fe_values.JxW(q);
+              volume += fe_values.JxW(q);
+            }
+          theta[cell->active_cell_index()] = integral / volume;
+        }
+    return theta;
   }
 
 

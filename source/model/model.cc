@@ -163,6 +163,8 @@ namespace FrictionalContact
   Model<dim>::print_summary(const ConditionalOStream &out) const
   {
     out << "Scene: " << dim << "D, " << material->describe() << std::endl;
+    if (const std::string warning = material->locking_warning(); !warning.empty())
+      out << warning << std::endl;
     for (const std::string &note : boundary_conditions->overridden)
       out << "Note: " << note << std::endl;
     out << "Mesh: " << triangulation.n_global_active_cells() << " cells; d = "

@@ -5,6 +5,7 @@
 #include <frictional_contact/base/files.h>
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/postprocess/output_writer.h>
+#include <frictional_contact/postprocess/tables.h>
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
@@ -22,46 +23,19 @@ namespace FrictionalContact
 {
   namespace
   {
-    /// Rows of all ranks on rank 0, sorted by their leading dim coordinates
-    /// (z, then y, then x), written under @p header.
-    void
-    write_sorted_table(const std::string              &file_name,
-                       const std::string              &header,
-                       const std::vector<std::string> &rows,
-                       const unsigned int              dim,
-                       const MPI_Comm                  comm)
-    {
-      // Sorted on rank 0 (the others gather nothing), written there.
-      const auto all = Utilities::MPI::gather(comm, rows, 0);
-      std::vector<std::pair<std::vector<double>, const std::string *>> sorted;
-      for (const auto &rank_rows : all)
-        for (const std::string &row : rank_rows)
-          {
-            std::vector<double> key;
-            std::istringstream  in(row);
-            std::string         field;
-            for (unsigned int d = 0; d < dim && std::getline(in, field, ','); ++d)
-              key.insert(key.begin(), std::stod(field));
-            sorted.emplace_back(key, &row);
-          }
-      std::sort(sorted.begin(), sorted.end(), [](const auto &a, const auto &b) {
-        return a.first < b.first;
-      });
-      std::string text = header + "\n";
-      for (const auto &[key, row] : sorted)
-        text += *row + "\n";
-      run_on_root(comm, [&]() { write_file_atomically(file_name, text); });
-    }
-
     /// The von Mises equivalent stress of the displacement field (in 2D
-    /// with the out-of-plane stress of plane stress or plane strain).
+    /// with the out-of-plane stress of plane stress or plane strain), with
+    /// the volumetric strain of the element: the trace at the point, or
+    /// for the B-bar element the cell's mean dilatation.
     template <int dim>
     class VonMisesStress : public DataPostprocessorScalar<dim>
     {
     public:
-      explicit VonMisesStress(const LinearElasticMaterial<dim> &material)
+      VonMisesStress(const LinearElasticMaterial<dim> &material,
+                     const dealii::Vector<double>     &mean_dilatation)
         : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
         , material(material)
+        , mean_dilatation(mean_dilatation)
       {}
 
       void
@@ -74,20 +48,26 @@ namespace FrictionalContact
             Tensor<2, dim> gradient;
             for (unsigned int d = 0; d < dim; ++d)
               gradient[d] = inputs.solution_gradients[q][d];
-            const SymmetricTensor<2, dim> stress =
-              material.stress_strain_tensor() * symmetrize(gradient);
+            const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+            const double                  theta =
+              material.mean_dilatation ?
+                                 mean_dilatation[inputs.template get_cell<dim>()
+                                    ->active_cell_index()] :
+                                 trace(strain);
+            const SymmetricTensor<2, dim> stress = material.stress(strain, theta);
             SymmetricTensor<2, 3> s;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = i; j < dim; ++j)
                 s[i][j] = stress[i][j];
-            if (dim == 2 && !material.plane_stress)
-              s[2][2] = material.poissons_ratio * (stress[0][0] + stress[1][1]);
+            if (dim == 2)
+              s[2][2] = material.out_of_plane_stress(stress);
             computed[q](0) = std::sqrt(1.5 * deviator(s) * deviator(s));
           }
       }
 
     private:
       const LinearElasticMaterial<dim> &material;
+      const dealii::Vector<double>     &mean_dilatation;
     };
 
     const char *state_name(const ContactState state)
@@ -126,9 +106,10 @@ namespace FrictionalContact
                       Patterns::Bool(),
                       "Also write contact-NNNNN.csv (every candidate: "
                       "position, displacement, normal displacement increment, "
-                      "gap, reactions, state) and displacement-NNNNN.csv "
-                      "(every vertex). Gathered on one rank: for small "
-                      "problems.");
+                      "gap, reactions, state), displacement-NNNNN.csv "
+                      "(every vertex) and stress-NNNNN.csv (every cell: "
+                      "the stress at its centre and its mean stress). "
+                      "Gathered on one rank: for small problems.");
     prm.declare_entry("Number of grouped files",
                       "1",
                       Patterns::Integer(0),
@@ -184,6 +165,7 @@ namespace FrictionalContact
       write_csv_files(result.increment,
                       model.get_body(),
                       model.get_contact(),
+                      model.get_material(),
                       result.state.u,
                       result.outcome.results);
     return {};
@@ -226,7 +208,7 @@ namespace FrictionalContact
               " (solution/, solution.pvd)";
     if (write_csv)
       text += std::string(text.empty() ? "" : ", ") +
-              "csv tables (contact-NNNNN.csv, displacement-NNNNN.csv)";
+              "csv tables (contact-, displacement-, stress-NNNNN.csv)";
     return text;
   }
 
@@ -330,8 +312,16 @@ namespace FrictionalContact
                                                       "contact_reaction_increment"),
                              DataOut<dim>::type_dof_data,
                              vector_field);
-    const VonMisesStress<dim> von_mises(material);
+    const dealii::Vector<double> mean_dilatation =
+      body.mean_volumetric_strain(u_ghosted);
+    const VonMisesStress<dim> von_mises(material, mean_dilatation);
     data_out.add_data_vector(u_ghosted, von_mises);
+    // The mean stress of each cell, sigma_m = K theta_bar (tension
+    // positive; its negative is the pressure of an incompressible body).
+    dealii::Vector<float> mean_stress(triangulation.n_active_cells());
+    for (unsigned int c = 0; c < mean_stress.size(); ++c)
+      mean_stress[c] = material.mean_stress(mean_dilatation[c]);
+    data_out.add_data_vector(mean_stress, "mean_stress");
     data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
     data_out.add_data_vector(scalar_dof_handler,
                              state_ghosted,
@@ -370,6 +360,7 @@ namespace FrictionalContact
   OutputWriter<dim>::write_csv_files(const unsigned int          increment,
                                      const ElasticBody<dim>     &body,
                                      const ContactOperator<dim> &contact,
+                                     const LinearElasticMaterial<dim> &material,
                                      const Vector               &u,
                                      const ContactResults<dim>  &results) const
   {
@@ -410,7 +401,7 @@ namespace FrictionalContact
     std::string contact_header = displacement_header + ",un,gap,rn";
     for (unsigned int d = 1; d < dim; ++d)
       contact_header += ",rt" + std::to_string(d);
-    write_sorted_table(directory + "/contact-" + suffix.str(),
+    Postprocess::write_sorted_table(directory + "/contact-" + suffix.str(),
                        contact_header + ",area,pressure,state",
                        rows,
                        dim,
@@ -436,11 +427,16 @@ namespace FrictionalContact
                      values[owned.index_within_set(cell->vertex_dof_index(v, d))]);
             rows.push_back(row.str());
           }
-    write_sorted_table(directory + "/displacement-" + suffix.str(),
+    Postprocess::write_sorted_table(directory + "/displacement-" + suffix.str(),
                        displacement_header,
                        rows,
                        dim,
                        comm);
+
+    std::string stress_header;
+    rows = Postprocess::cell_stress_rows(body, material, u, stress_header);
+    Postprocess::write_sorted_table(
+      directory + "/stress-" + suffix.str(), stress_header, rows, dim, comm);
   }
 
   FRICTIONAL_CONTACT_REGISTER_PLUGIN(

@@ -58,7 +58,7 @@ namespace FrictionalContact
     print_increment(const ConditionalOStream   &out,
                     const IncrementResult<dim> &result,
                     const std::string          &iteration_name,
-                    const std::string          &last_preconditioner)
+                    const std::string          &last_linear_solve)
     {
       const SolveStatistics     &solve   = result.outcome.statistics;
       const ContactSummary<dim> &summary = result.summary;
@@ -80,7 +80,7 @@ namespace FrictionalContact
             << summary.count(ContactState::slip) << std::endl;
       else
         out << ": elastic solve, " << solve.linear_iterations
-            << " CG iterations (" << last_preconditioner << ")" << std::endl;
+            << " " << last_linear_solve << std::endl;
       // The candidates' penetration is bounded by the residual; a vertex
       // that is not a candidate must not go deeper.
       if (contact && summary.deepest_penetration > allowed_penetration(result))

@@ -175,6 +175,7 @@ namespace FrictionalContact
         A,
         ProjectedPreconditioner<dim, ConditionPreconditioner<dim>>(
           preconditioner, P),
+        linear_solver.volumetric_split(),
         any_slip,
         linear_solver.maximum_iterations(),
         std::max(reduction * rhs.l2_norm(), floor), rhs, w);
@@ -372,7 +373,14 @@ namespace FrictionalContact
     const unsigned int setups   = linear_solver.n_amg_setups;
     linear_solver.prepare_stiffness_preconditioner();
 
-    const std::vector<double> c = contact.normal_stiffness(K);
+    // The scale c_j of the complementarity functions: K's normal diagonal,
+    // or for a nearly incompressible body that of the split's reduced
+    // stiffness. K's carries the bulk modulus, thousands of times the
+    // shear modulus at nu = 0.4999, and c_j that large let the gaps of
+    // inexact Newton steps decide the normal sets, which then cycle.
+    const VolumetricSplit *volumetric = linear_solver.volumetric_split();
+    const std::vector<double> c = contact.normal_stiffness(
+      volumetric != nullptr ? *volumetric->reduced_stiffness : K);
 
     std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)
@@ -397,7 +405,12 @@ namespace FrictionalContact
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);
     bool                      first     = true;
-    ForcingTerm               forcing(forcing_rule, linear_reduction);
+    // A nearly incompressible body's Newton steps need tighter solves: with
+    // the forcing terms of a compressible one, the normal sets of Hertz 2D
+    // at nu = 0.4999 cycle (doc/performance.md, "Nearly incompressible").
+    ForcingTerm forcing(forcing_rule,
+                        volumetric != nullptr ? 0.01 * linear_reduction :
+                                                linear_reduction);
     ConditionPreconditioner<dim> preconditioner(
       linear_solver, contact, preconditioner_sees_conditions, comm);
     MeritWatch                progress;

@@ -157,9 +157,11 @@ namespace FrictionalContact
   ShiftedStiffnessSolver::initialize(
     const TrilinosWrappers::SparseMatrix &K,
     std::vector<std::vector<double>>      rigid_body_modes,
-    const double                          smallest_eigenvalue_estimate)
+    const double                          smallest_eigenvalue_estimate,
+    const VolumetricSplit                &volumetric)
   {
     stiffness        = &K;
+    split            = volumetric;
     modes            = std::move(rigid_body_modes);
     spring_amg_tried = false;
     stiffness_floor = smallest_eigenvalue_estimate;
@@ -188,6 +190,7 @@ namespace FrictionalContact
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
     stiffness         = nullptr;
+    split             = {};
   }
 
 
@@ -229,16 +232,16 @@ namespace FrictionalContact
 
     Timer timer;
     amg.preconditioner.clear(); // ML keeps a reference to its matrix
-    // Without a shift the AMG is built on K itself, without a copy.
+    // Without a shift the AMG is built on K (or A) itself, without a copy.
     if (sigma != 0)
       {
-        amg.matrix.copy_from(*stiffness);
+        amg.matrix.copy_from(amg_matrix());
         for (const auto i : stiffness->locally_owned_range_indices())
           amg.matrix.add(i, i, sigma);
         amg.matrix.compress(VectorOperation::add);
       }
     const TrilinosWrappers::SparseMatrix &matrix =
-      sigma != 0 ? amg.matrix : *stiffness;
+      sigma != 0 ? amg.matrix : amg_matrix();
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -297,7 +300,7 @@ namespace FrictionalContact
         const auto &amg = amg_for(0.);
         const std::vector<std::vector<double>> used_modes(
           modes.begin(), modes.begin() + n_null_space_modes());
-        spring_amg.initialize(*stiffness, amg, used_modes, smoother_sweeps);
+        spring_amg.initialize(amg_matrix(), amg, used_modes, smoother_sweeps);
         spring_amg_tried = true;
       }
     return spring_amg;
@@ -311,12 +314,12 @@ namespace FrictionalContact
     if (use_jacobi(0.))
       {
         build_jacobi(0.);
-        last_preconditioner = "Jacobi";
+        last_linear_solve = "CG iterations (Jacobi)";
       }
     else
       {
         amg_for(0.);
-        last_preconditioner = "AMG";
+        last_linear_solve = "CG iterations (AMG)";
       }
   }
 
@@ -348,15 +351,35 @@ namespace FrictionalContact
         if (use_jacobi(sigma))
           {
             build_jacobi(sigma);
-            last_preconditioner = "Jacobi";
+            last_linear_solve = "CG iterations (Jacobi)";
             const Timer timer;
             cg.solve(op, x, b, DiagonalPreconditioner(inverse_diagonal));
             krylov_seconds += timer.wall_time();
           }
+        else if (volumetric_split() != nullptr)
+          {
+            const auto &amg     = amg_for(sigma);
+            last_linear_solve = "GMRES iterations (AMG, mixed form)";
+            const Timer timer;
+            const auto  shift = [sigma](Vector &force, const Vector &u) {
+              if (sigma != 0)
+                force.add(sigma, u);
+            };
+            Vector     residual(b);
+            const auto true_residual = [&](const Vector &u) {
+              op.vmult(residual, u);
+              residual -= b;
+              return residual.l2_norm();
+            };
+            const unsigned int iterations = MixedVolumetric::solve(
+              split, shift, amg, true_residual, max_iterations, tolerance, x, b);
+            krylov_seconds += timer.wall_time();
+            return iterations;
+          }
         else
           {
             const auto &amg     = amg_for(sigma);
-            last_preconditioner = "AMG";
+            last_linear_solve = "CG iterations (AMG)";
             const Timer timer;
             cg.solve(op, x, b, amg);
             krylov_seconds += timer.wall_time();
@@ -365,10 +388,10 @@ namespace FrictionalContact
     catch (const SolverControl::NoConvergence &e)
       {
         std::ostringstream message;
-        message << "the conjugate gradient solve of (K + " << sigma
+        message << "the " << (volumetric_split() != nullptr ? "GMRES" : "conjugate gradient") << " solve of (K + " << sigma
                 << " I) x = b did not converge: residual " << e.last_residual
                 << " after " << e.last_step << " iterations, tolerance "
-                << tolerance << " (" << last_preconditioner
+                << tolerance << " (" << last_linear_solve
                 << " preconditioner). Try a larger <Linear solver/Maximum "
                    "iterations> or <Linear solver/Relative tolerance>";
         throw SolverError(message.str());

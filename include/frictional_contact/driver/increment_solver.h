@@ -107,11 +107,11 @@ namespace FrictionalContact
       return linear_solver;
     }
 
-    /// The preconditioner of the last linear solve ("AMG", "Jacobi").
+    /// What the last linear solve counted ("CG iterations (AMG)", ...).
     const std::string &
-    last_preconditioner() const
+    last_linear_solve() const
     {
-      return linear_solver.last_preconditioner;
+      return linear_solver.last_linear_solve;
     }
 
   private:

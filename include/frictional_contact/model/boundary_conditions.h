@@ -16,7 +16,8 @@ namespace FrictionalContact
    * Supports and loads of the elastic body, as read from the subsection
    * "Boundary conditions": boundaries with zero displacement (all or some
    * components), boundaries with a prescribed displacement (a function of
-   * position and time), surface tractions per boundary and a body force.
+   * position and time), surface tractions and normal pressures per
+   * boundary and a body force.
    */
   template <int dim>
   class BoundaryConditions
@@ -39,6 +40,8 @@ namespace FrictionalContact
     /// u(x, t) on the prescribed boundaries.
     std::unique_ptr<FunctionParser<dim>>          prescribed_displacement;
     std::map<types::boundary_id, Tensor<1, dim>> tractions;
+    /// Normal pressures per boundary (against the outward normal).
+    std::map<types::boundary_id, double>          pressures;
     Tensor<1, dim>                                body_force;
     /// One line per boundary component both fixed and prescribed (fixed
     /// wins): the scene's prescribed displacement does not act there.

@@ -12,6 +12,7 @@
 
 #include <frictional_contact/model/boundary_conditions.h>
 #include <frictional_contact/model/material.h>
+#include <frictional_contact/model/volumetric_blocks.h>
 
 #include <array>
 #include <vector>
@@ -20,7 +21,7 @@ namespace FrictionalContact
 {
   /**
    * The discretised elastic body: Q1 displacement field on a distributed
-   * mesh, its zero-displacement constraints, the stiffness matrix K and the
+   * mesh (the standard or the B-bar element, as the material says), its zero-displacement constraints, the stiffness matrix K and the
    * load vector p of the reference load (load factor 1). Also evaluates the
    * support reactions for a given displacement.
    */
@@ -42,6 +43,15 @@ namespace FrictionalContact
     /// (non-ghosted) vector @p u. Collective.
     double
     largest_nodal_magnitude(const Vector &u) const;
+
+    /**
+     * The cell average of div u (the mean dilatation that the B-bar element
+     * uses as the volumetric strain) of each locally owned cell, indexed by
+     * active_cell_index() (zero on the other cells). @p u_ghosted must have
+     * ghost entries.
+     */
+    dealii::Vector<double>
+    mean_volumetric_strain(const Vector &u_ghosted) const;
 
     /// Assembles K and p. Call after setup().
     void
@@ -141,6 +151,14 @@ namespace FrictionalContact
       return stiffness;
     }
 
+    /// K with its volumetric part held apart, for a nearly incompressible
+    /// (B-bar) body; empty (null pointers) otherwise.
+    VolumetricSplit
+    volumetric_split() const
+    {
+      return volumetric.split();
+    }
+
     const Vector &
     load_vector() const
     {
@@ -193,6 +211,9 @@ namespace FrictionalContact
       FullMatrix<double>                   cell_matrix;
       dealii::Vector<double>               cell_load;
       std::vector<types::global_dof_index> dof_indices;
+      /// The integrals of div phi_i over the cell, and its volume.
+      std::vector<double>                  divergence_integral;
+      double                               volume = 0;
     };
 
     /// The cell matrix and load of @p cell, into @p scratch.
@@ -220,6 +241,8 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix stiffness;
     Vector                         load;
     Tensor<1, dim>                 reference_total_load;
+    /// The volumetric split of K (B-bar bodies only).
+    VolumetricBlocks<dim>          volumetric;
     types::global_dof_index        n_free = 0;
   };
 } // namespace FrictionalContact

@@ -10,8 +10,11 @@ namespace FrictionalContact
   using namespace dealii;
 
   /**
-   * Linear isotropic elasticity: Young's modulus, Poisson's ratio and, in
-   * 2D, plane stress or plane strain. Owns the stress-strain tensor.
+   * Linear isotropic elasticity: Young's modulus, Poisson's ratio, in 2D
+   * plane stress or plane strain, and the element formulation that carries
+   * the volumetric strain (the standard Q1 element, or the mean-dilatation
+   * B-bar element that does not lock as nu approaches 1/2). Owns the
+   * stress-strain tensor and its split into shear and bulk parts.
    */
   template <int dim>
   class LinearElasticMaterial
@@ -24,22 +27,63 @@ namespace FrictionalContact
     /// Reads the subsection "Material".
     explicit LinearElasticMaterial(ParameterHandler &prm);
 
-    /// The fourth-order tensor C with sigma = C : epsilon.
+    /// The fourth-order tensor C with sigma = C : epsilon (of the standard
+    /// element).
     const SymmetricTensor<4, dim> &
     stress_strain_tensor() const
     {
       return stiffness;
     }
 
-    /// "E = 1, nu = 0.3, plane stress"
+    /**
+     * The stress of a strain @p strain whose volumetric part (its trace)
+     * is replaced by @p volumetric_strain: the cell average of the trace
+     * for the B-bar element, the trace itself for the standard one.
+     * sigma = 2 G dev(epsilon) + K theta I, with the deviator and the
+     * bulk modulus K of dim dimensions (the in-plane ones in 2D).
+     */
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &strain,
+           const double                   volumetric_strain) const;
+
+    /// The out-of-plane normal stress of plane strain (zero in plane
+    /// stress) for the in-plane stress @p stress.
+    double
+    out_of_plane_stress(const SymmetricTensor<2, dim> &stress) const;
+
+    /// The mean stress trace(sigma)/3 (of the 3D stress, in 2D with the
+    /// out-of-plane stress) for a volumetric strain @p volumetric_strain.
+    double
+    mean_stress(const double volumetric_strain) const;
+
+    /// "E = 1, nu = 0.3, plane stress" (and ", B-bar element" when used)
     std::string
     describe() const;
+
+    /**
+     * A warning line when the standard element is forced on a nearly
+     * incompressible material (it locks); empty otherwise.
+     */
+    std::string
+    locking_warning() const;
 
     double youngs_modulus;
     double poissons_ratio;
     bool   plane_stress;
+    /// Whether the mean-dilatation (B-bar) element is used.
+    bool   mean_dilatation;
+    /// G: the shear modulus.
+    double shear_modulus;
+    /// K: the bulk modulus of dim-dimensional elasticity (lambda + 2 G / dim,
+    /// with the plane-stress lambda in 2D plane stress).
+    double bulk_modulus;
+
+    /// Above this Poisson's ratio, 'auto' picks the B-bar element.
+    static constexpr double locking_threshold = 0.45;
 
   private:
     SymmetricTensor<4, dim> stiffness;
+    /// Whether the user forced the standard element.
+    bool standard_forced;
   };
 } // namespace FrictionalContact

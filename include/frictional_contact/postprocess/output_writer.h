@@ -65,6 +65,7 @@ namespace FrictionalContact
     write_csv_files(const unsigned int          increment,
                     const ElasticBody<dim>     &body,
                     const ContactOperator<dim> &contact,
+                    const LinearElasticMaterial<dim> &material,
                     const Vector               &u,
                     const ContactResults<dim>  &results) const;
 

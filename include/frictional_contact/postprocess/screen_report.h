@@ -21,7 +21,7 @@ namespace FrictionalContact
     print_increment(const ConditionalOStream   &out,
                     const IncrementResult<dim> &result,
                     const std::string          &iteration_name,
-                    const std::string          &last_preconditioner);
+                    const std::string          &last_linear_solve);
 
     /// The state after the last increment.
     template <int dim>

@@ -5,6 +5,7 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <frictional_contact/solvers/contact_problem.h>
+#include <frictional_contact/solvers/volumetric_split.h>
 
 #include <limits>
 #include <vector>
@@ -97,9 +98,17 @@ namespace FrictionalContact
       vmult(Vector &dst, const Vector &src) const
       {
         K.vmult(dst, src);
-        couple(dst);
-        add_robin(src, 1., dst);
-        P.apply(dst);
+        finish(dst, src);
+      }
+
+      /// The operator from the force K u in @p force: the coupling, the
+      /// Robin term of @p u, the projection.
+      void
+      finish(Vector &force, const Vector &u) const
+      {
+        couple(force);
+        add_robin(u, 1., force);
+        P.apply(force);
       }
 
       /// v += C v: the friction force that goes with the normal reaction.
@@ -335,21 +344,45 @@ namespace FrictionalContact
 
     /**
      * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
-     * a slipping node makes A non-symmetric, else CG. Returns the Krylov
-     * iterations; throws SolverControl::NoConvergence.
+     * a slipping node makes A non-symmetric, else CG; with a @p volumetric
+     * split of K (a nearly incompressible body), GMRES on the mixed form
+     * of A (volumetric_split.h), the preconditioner then being that of the
+     * split's reduced stiffness. Returns the Krylov iterations; throws
+     * SolverControl::NoConvergence.
      */
     template <int dim, typename Preconditioner>
     unsigned int
     solve_newton_system(const ContactStiffness<dim> &A,
                         const Preconditioner        &preconditioner,
+                        const VolumetricSplit       *volumetric,
                         const bool                   non_symmetric,
                         const unsigned int           max_iterations,
                         const double                 goal,
                         const Vector                &rhs,
                         Vector                      &w)
     {
-      SolverControl control(max_iterations, goal, false, false);
       w = 0;
+      if (volumetric != nullptr)
+        {
+          Vector     residual(rhs);
+          const auto true_residual = [&](const Vector &x) {
+            A.vmult(residual, x);
+            residual -= rhs;
+            return residual.l2_norm();
+          };
+          const auto finish = [&A](Vector &force, const Vector &u) {
+            A.finish(force, u);
+          };
+          return MixedVolumetric::solve(*volumetric,
+                                        finish,
+                                        preconditioner,
+                                        true_residual,
+                                        max_iterations,
+                                        goal,
+                                        w,
+                                        rhs);
+        }
+      SolverControl control(max_iterations, goal, false, false);
       if (non_symmetric)
         {
           SolverGMRES<Vector> gmres(

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/solvers/spring_amg.h>
+#include <frictional_contact/solvers/volumetric_split.h>
 
 #include <memory>
 #include <string>
@@ -48,12 +49,23 @@ namespace FrictionalContact
     /**
      * Keeps a reference to @p stiffness (which must outlive this object)
      * and the near null space for the AMG (one vector per rigid-body mode,
-     * each of the locally owned size).
+     * each of the locally owned size). With a @p volumetric split (a
+     * nearly incompressible body; its matrices must outlive this object
+     * too), the AMG is built on its reduced stiffness A and the solves
+     * with AMG go through the mixed system (volumetric_split.h).
      */
     void
     initialize(const TrilinosWrappers::SparseMatrix &stiffness,
                std::vector<std::vector<double>>      rigid_body_modes,
-               const double                          smallest_eigenvalue_estimate = 0);
+               const double                          smallest_eigenvalue_estimate = 0,
+               const VolumetricSplit                &volumetric = {});
+
+    /// The volumetric split of K, or nullptr if K has none.
+    const VolumetricSplit *
+    volumetric_split() const
+    {
+      return split.reduced_stiffness != nullptr ? &split : nullptr;
+    }
 
     /// Drops the preconditioners and the reference to K, before K changes
     /// (a new mesh); initialize() again before the next solve.
@@ -122,8 +134,10 @@ namespace FrictionalContact
     /// primal steps and the Newton systems.
     double krylov_seconds = 0;
 
-    /// The preconditioner of the last solve: "AMG" or "Jacobi".
-    std::string last_preconditioner;
+    /// What the last solve counted: "CG iterations (AMG)", "CG iterations
+    /// (Jacobi)" or, through the mixed system, "GMRES iterations (AMG,
+    /// mixed form)".
+    std::string last_linear_solve;
 
   private:
     bool
@@ -142,9 +156,18 @@ namespace FrictionalContact
       double                            sigma = -1;
     };
 
-    /// The AMG for @p sigma, (re)built if needed.
+    /// The AMG for @p sigma, (re)built if needed: of K + sigma I, or of
+    /// A + sigma I with a volumetric split.
     const TrilinosWrappers::PreconditionAMG &
     amg_for(const double sigma);
+
+    /// The matrix the AMG is built from: K, or A with a volumetric split.
+    const TrilinosWrappers::SparseMatrix &
+    amg_matrix() const
+    {
+      return split.reduced_stiffness != nullptr ? *split.reduced_stiffness :
+                                                  *stiffness;
+    }
 
     void
     build_jacobi(const double sigma);
@@ -163,6 +186,8 @@ namespace FrictionalContact
     bool         translations_only;
 
     const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
+    /// K = A + B^T C^-1 B for a nearly incompressible body (else empty).
+    VolumetricSplit                       split;
     std::vector<std::vector<double>>      modes;
     double                                max_diagonal = 0;
     /// A lower bound for K's spectrum (0 if unknown), to judge shifts.
