@@ -6,6 +6,7 @@ classical solutions of contact mechanics. Reads the run's `statistics`,
 
 usage: check_analytic.py hertz OUTPUT_DIR [--radius-tolerance 0.05]
                                           [--pressure-tolerance 0.10]
+                                          [--profile-tolerance 0.05]
        check_analytic.py cattaneo OUTPUT_DIR --rows FIRST-LAST
        check_analytic.py sliding OUTPUT_DIR [--tolerance 1e-6]
 
@@ -14,7 +15,9 @@ hertz: contact radius (3D) or half-width (2D) and peak pressure against
   within the tolerances. The contact radius is that of the area of the
   nodes in contact (sum of their lumped areas, all symmetric copies: a =
   sqrt(A / pi), or A / 2 in 2D); the peak pressure is the largest nodal
-  pressure (normal reaction over lumped area).
+  pressure (normal reaction over lumped area). With --profile-tolerance,
+  also every nodal pressure within 0.8 a of the centre against Hertz's
+  profile at its radius, relative to Hertz's p0.
 cattaneo: on each row, the stick zone's radius (from the stick area, as
   above) within one element size of a (1 - Q / (mu P))^k, k = 1/3 for the
   ball (Mindlin), 1/2 for the cylinder, with a the measured contact radius.
@@ -22,6 +25,7 @@ sliding: rows where every node in contact slips have T = mu N (relative
   tolerance), rows with sticking nodes have T < mu N; at least one of each.
 """
 import argparse
+import csv
 import glob
 import math
 import os
@@ -65,6 +69,8 @@ class Scene:
         self.E_star = self.E if plane_stress else self.E / (1 - self.nu ** 2)
         self.mu = float(p["Contact/Friction coefficient"])
         self.radius = float(p.get("Geometry/Half ball/Radius", "nan"))
+        self.center = [float(c) for c in
+                       p.get("Geometry/Half ball/Center", "0, 0, 0").split(",")]
         self.planes = int(p.get("Geometry/Half ball/Symmetry planes", "0"))
         self.copies = 2 ** self.planes
         self.directory = directory
@@ -116,11 +122,43 @@ def hertz(scene):
     return P, a, a_hertz, p0, p_hertz
 
 
+def pressure_profile_error(scene, a_hertz, p_hertz):
+    """The largest difference, over the contact nodes within 0.8 a of the
+    centre, between the nodal pressure and Hertz's profile
+    p0 sqrt(1 - r^2 / a^2) at the node's radius, relative to p0, and the
+    number of such nodes: a pressure that oscillates from node to node (a
+    locking element) fails this even where its peak is right."""
+    files = sorted(glob.glob(scene.directory + "/contact-*.csv"))
+    if not files:
+        sys.exit("no contact-*.csv: set Output/Write csv tables = true")
+    with open(files[-1]) as f:
+        rows = list(csv.DictReader(f))
+    worst, count = 0.0, 0
+    for row in rows:
+        x = [float(row[c]) - scene.center[i]
+             for i, c in enumerate("xyz"[:scene.dim - 1])]
+        r = math.sqrt(sum(c * c for c in x))
+        if r > 0.8 * a_hertz:
+            continue
+        exact = p_hertz * math.sqrt(1 - (r / a_hertz) ** 2)
+        worst = max(worst, abs(float(row["pressure"]) - exact) / p_hertz)
+        count += 1
+    return worst, count
+
+
 def check_hertz(scene, args):
     P, a, a_hertz, p0, p_hertz = hertz(scene)
     error_a = abs(a - a_hertz) / a_hertz
     error_p = abs(p0 - p_hertz) / p_hertz
     ok = error_a <= args.radius_tolerance and error_p <= args.pressure_tolerance
+    if args.profile_tolerance is not None:
+        error_profile, count = pressure_profile_error(scene, a_hertz, p_hertz)
+        passed = count > 0 and error_profile <= args.profile_tolerance
+        ok = ok and passed
+        print(f"Hertz {scene.dim}D: nodal pressures within 0.8 a ({count} "
+              f"nodes) differ from Hertz's profile by at most "
+              f"{100 * error_profile:.2f} % of p0 (allowed "
+              f"{100 * args.profile_tolerance:g} %)")
     name = "half-width" if scene.dim == 2 else "radius"
     print(f"Hertz {scene.dim}D: P = {P:.6g}, contact {name} {a:.6g} against "
           f"{a_hertz:.6g} (error {100 * error_a:.2f} %, allowed "
@@ -187,6 +225,7 @@ def main():
     parser.add_argument("--pressure-tolerance", type=float, default=0.10)
     parser.add_argument("--rows", default="2-3")
     parser.add_argument("--tolerance", type=float, default=1e-6)
+    parser.add_argument("--profile-tolerance", type=float, default=None)
     args = parser.parse_args()
     scene = Scene(args.directory)
     check = {"hertz": check_hertz, "cattaneo": check_cattaneo,

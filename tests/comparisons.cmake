@@ -168,12 +168,18 @@ contact_compare_tables(extreme_stiff_newton.same_displacement
 
 # Classical solutions (check_analytic.py): Hertz's contact radius and peak
 # pressure, Cattaneo-Mindlin's stick zone, the sliding block's T = mu N.
-# The adaptive Hertz scenes are held to 1 percent (2D) and 2 percent (3D).
+# The adaptive Hertz scenes are held to 1 percent (2D) and 2 percent (3D);
+# the nearly incompressible ones (B-bar) to 1 % in the radius, 2 % in the
+# peak pressure and 5 % of p0 in every nodal pressure within 0.8 a.
 foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
               cattaneo_3d:cattaneo cattaneo_3d_eisenstat_walker:cattaneo
               sliding_block:sliding
               "hertz_2d_adaptive:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.01"
-              "hertz_3d_adaptive.mpirun=2:hertz:--radius-tolerance:0.02:--pressure-tolerance:0.02")
+              "hertz_3d_adaptive.mpirun=2:hertz:--radius-tolerance:0.02:--pressure-tolerance:0.02"
+              "hertz_2d_nu_049:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
+              "hertz_2d_nu_04999:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
+              "hertz_3d_nu_04999.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
+              cattaneo_3d_nu_04999:cattaneo)
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
   list(GET _case 1 _problem)
@@ -296,3 +302,16 @@ add_test(NAME restart_adaptive
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
 set_tests_properties(restart_adaptive PROPERTIES ENVIRONMENT "${_environment}"
   PROCESSORS 2)
+
+# Lame's thick-walled tube and sphere at nu = 0.4999 (check_lame.py): the
+# B-bar element within 1 % of the exact displacement and stresses, on 1, 2
+# and 3 ranks; the standard element forced on the same sphere locks, and
+# the same check must fail on it.
+foreach(_test lame_2d lame_3d.mpirun=2 lame_3d.mpirun=3 lame_3d_standard)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  add_test(NAME ${_test}.analytic
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_lame.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 0.01)
+  set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
+endforeach()
+set_tests_properties(lame_3d_standard.analytic PROPERTIES WILL_FAIL TRUE)

@@ -117,6 +117,18 @@ namespace FrictionalContact
                       "The modes ML's aggregation preserves: all rigid-body "
                       "modes (translations and rotations) or translations "
                       "only, as DoFTools::extract_constant_modes gives.");
+    prm.declare_entry(
+      "Nearly incompressible solves",
+      "mixed",
+      Patterns::Selection("mixed|condensed"),
+      "How a B-bar body with a bulk modulus above that of nu = 0.4 is "
+      "solved. mixed: GMRES on the mixed system [A B^T; B -C] (A the "
+      "stiffness at nu = 0.4, B the cells' divergence integrals, C their "
+      "compliances), preconditioned by the AMG of A and a diagonal Schur "
+      "complement; its iterations hardly grow with the bulk modulus. "
+      "condensed: CG (or GMRES) on K itself, as for any other body, whose "
+      "iterations grow as sqrt(bulk modulus / shear modulus) "
+      "(doc/performance.md, \"Nearly incompressible bodies\").");
     prm.declare_entry("AMG aggregation threshold",
                       "1e-4",
                       Patterns::Double(0., 1.),
@@ -148,6 +160,7 @@ namespace FrictionalContact
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     prolongator_damping   = prm.get_double("AMG prolongator damping");
     translations_only = prm.get("AMG near null space") == "translations";
+    mixed_solves      = prm.get("Nearly incompressible solves") == "mixed";
     prm.leave_subsection();
   }
 
@@ -161,7 +174,7 @@ namespace FrictionalContact
     const VolumetricSplit                &volumetric)
   {
     stiffness        = &K;
-    split            = volumetric;
+    split            = mixed_solves ? volumetric : VolumetricSplit();
     modes            = std::move(rigid_body_modes);
     spring_amg_tried = false;
     stiffness_floor = smallest_eigenvalue_estimate;

@@ -184,6 +184,8 @@ namespace FrictionalContact
     double       aggregation_threshold;
     double       prolongator_damping;
     bool         translations_only;
+    /// Whether a volumetric split is used (<Nearly incompressible solves>).
+    bool         mixed_solves;
 
     const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
     /// K = A + B^T C^-1 B for a nearly incompressible body (else empty).
