@@ -6,6 +6,7 @@
 #include <frictional_contact/fclib/fclib_solve.h>
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/parameter_file.h>
+#include <frictional_contact/base/run_control.h>
 #include <frictional_contact/driver/simulator.h>
 
 #include <algorithm>
@@ -162,6 +163,7 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  RunControl::install_signal_handlers();
   const bool  is_root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   Options     options;
   try
@@ -256,6 +258,27 @@ main(int argc, char *argv[])
     {
       report_error(is_root, e.what());
       return 1;
+    }
+  catch (const WriteError &e)
+    {
+      report_error(is_root, e.what());
+      return 74;
+    }
+  catch (const StoppedBySignal &e)
+    {
+      if (is_root)
+        std::cerr << (std::string("Stopped: ") + e.what() + "\n") << std::flush;
+      return RunControl::exit_code_try_again;
+    }
+  catch (const StopRequested &e)
+    {
+      report_error(is_root, std::string(e.what()) + "; nothing was written");
+      return RunControl::exit_code_try_again;
+    }
+  catch (const OutputFolderBusy &e)
+    {
+      report_error(is_root, e.what());
+      return RunControl::exit_code_try_again;
     }
   catch (const SolverError &e)
     {

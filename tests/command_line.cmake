@@ -31,3 +31,14 @@ add_test(NAME paths/relative_to_parameter_file
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/paths)
 set_tests_properties(paths/relative_to_parameter_file PROPERTIES
   ENVIRONMENT "${_environment}")
+
+# The documentation stays true: every parameter path, file, test name and
+# script option that README.md and doc/ quote exists (check_docs.py), and
+# doc/parameters.md is what scripts/parameter_reference.py makes of the
+# program's parameters.
+add_test(NAME docs/quoted_things_exist
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_docs.py
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:contact> ${CMAKE_BINARY_DIR})
+add_test(NAME docs/parameter_reference
+  COMMAND ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/parameter_reference.py
+          --contact $<TARGET_FILE:contact> --check)

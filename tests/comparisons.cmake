@@ -89,6 +89,19 @@ add_test(NAME restart
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
 set_tests_properties(restart PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)
 
+# Signals, a busy output folder and a full disk (issue 34): one line, exit
+# codes 75 and 74, and the resumed run ends where an uninterrupted one does.
+# The full disk needs root for its tmpfs and is skipped without.
+foreach(_script run_control full_disk)
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${_script})
+  add_test(NAME ${_script}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/${_script}.sh $<TARGET_FILE:contact>
+            ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${_script})
+  set_tests_properties(${_script} PROPERTIES ENVIRONMENT "${_environment}"
+    PROCESSORS 2 SKIP_RETURN_CODE 77)
+endforeach()
+
 # The plotting script on a real convergence history: a PNG that is not empty.
 add_test(NAME example1_history.plot
   COMMAND sh -c "rm -f residuals.png && ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/plot_history.py -o residuals.png 'Algorithm 2=output-example1_history/history-00001.txt' && test $(head -c 4 residuals.png | od -An -c | tr -d ' ') = '211PNG' && test $(wc -c < residuals.png) -gt 20000 && echo 'residuals.png is a PNG of' $(wc -c < residuals.png) bytes"

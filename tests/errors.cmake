@@ -46,6 +46,11 @@ foreach(_scene ${_error_scenes})
     string(ASCII 7 200 1 27 255 3 _bytes)
     file(WRITE ${_directory}/garbage.msh
       "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n${_bytes}${_bytes}\n")
+  elseif(_base STREQUAL "random_bytes_with_cr")
+    # Binary bytes with a CR LF among them: "not a text file", not "Windows
+    # line endings".
+    string(ASCII 200 13 10 128 7 _bytes)
+    file(WRITE ${_directory}/${_base}.prm "${_bytes}set Dimension = 2\n${_bytes}\n")
   elseif(_base STREQUAL "random_bytes")
     string(ASCII 7 200 1 27 255 3 _bytes)
     file(WRITE ${_directory}/${_base}.prm "set Dimension = 2${_bytes}\n${_bytes}${_bytes}\n")
@@ -68,7 +73,7 @@ endforeach()
 set(_directory ${CMAKE_CURRENT_BINARY_DIR}/errors/write_fails_mid_run)
 file(MAKE_DIRECTORY ${_directory})
 add_test(NAME errors/write_fails_mid_run.mpirun=2
-  COMMAND sh -c "rm -rf out && mkdir out && touch out/solution && printf 'include ${PROJECT_SOURCE_DIR}/parameters/example1.prm\\nset Output directory = out\\n' > scene.prm && timeout 120 mpirun -np 2 $<TARGET_FILE:contact> scene.prm > output.raw 2> errors.raw; code=$?; cat output.raw errors.raw; test $code -eq 1 && test $(grep -c '^Error: cannot write the output' errors.raw) -eq 1 && echo 'failed as expected, on both ranks'"
+  COMMAND sh -c "rm -rf out && mkdir out && touch out/solution && printf 'include ${PROJECT_SOURCE_DIR}/parameters/example1.prm\\nset Output directory = out\\n' > scene.prm && timeout 120 mpirun -np 2 $<TARGET_FILE:contact> scene.prm > output.raw 2> errors.raw; code=$?; cat output.raw errors.raw; test $code -eq 1 && test $(grep -c '^Error: cannot write .out/solution.*Not a directory.*check <Output directory>' errors.raw) -eq 1 && echo 'failed as expected, on both ranks'"
   WORKING_DIRECTORY ${_directory})
 set_tests_properties(errors/write_fails_mid_run.mpirun=2 PROPERTIES
   ENVIRONMENT "${_environment}" PROCESSORS 2)

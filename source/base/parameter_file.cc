@@ -21,6 +21,48 @@ namespace FrictionalContact
 
 
     /**
+     * The position of the first byte that a text file does not have: a
+     * control byte other than tab, line feed and a carriage return before
+     * a line feed, or a byte outside a well-formed UTF-8 sequence; npos if
+     * there is none.
+     */
+    std::size_t
+    first_non_text_byte(const std::string &text)
+    {
+      for (std::size_t i = 0; i < text.size();)
+        {
+          const unsigned char c = text[i];
+          if (c < 32 || c == 127)
+            {
+              const bool allowed =
+                c == '\t' || c == '\n' ||
+                (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n');
+              if (!allowed)
+                return i;
+              ++i;
+              continue;
+            }
+          // UTF-8: the lead byte gives the length, continuation bytes are
+          // 10xxxxxx; overlong two-byte forms (C0, C1) and bytes above F4
+          // never occur.
+          const std::size_t length = c < 0x80 ? 1 :
+                                     c >= 0xC2 && c <= 0xDF ? 2 :
+                                     c >= 0xE0 && c <= 0xEF ? 3 :
+                                     c >= 0xF0 && c <= 0xF4 ? 4 :
+                                                              0;
+          if (length == 0 || i + length > text.size())
+            return i;
+          for (std::size_t k = 1; k < length; ++k)
+            if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80)
+              return i;
+          i += length;
+        }
+      return std::string::npos;
+    }
+
+
+
+    /**
      * The file's text; an InputError, naming the file and the fix, if it
      * cannot be read, is a folder, is empty, is not text, starts with a
      * byte-order mark or has CR LF ends.
@@ -47,20 +89,22 @@ namespace FrictionalContact
                          "' starts with a UTF-8 byte-order mark; save it "
                          "without one, e.g. with: sed -i '1s/^\\xEF\\xBB\\xBF//' " +
                          file_name);
+      // Not text first (a binary file also has CR bytes), then CR LF.
+      if (const std::size_t bad = first_non_text_byte(content);
+          bad != std::string::npos)
+        throw InputError("the parameter file '" + file_name +
+                         "' is not a text file (" +
+                         (static_cast<unsigned char>(content[bad]) < 32 ||
+                              content[bad] == 127 ?
+                            "a control byte" :
+                            "a byte that is not UTF-8") +
+                         " on line " + std::to_string(line_of(content, bad)) +
+                         "); give a deal.II parameter file (.prm)");
       if (const auto cr = content.find('\r'); cr != std::string::npos)
         throw InputError(
           "the parameter file '" + file_name + "' has Windows line endings "
           "(CR LF, first on line " + std::to_string(line_of(content, cr)) +
           "); convert it with: sed -i 's/\\r$//' " + file_name);
-      const auto control =
-        std::find_if(content.begin(), content.end(), [](const char c) {
-          return static_cast<unsigned char>(c) < 32 && c != '\n' && c != '\t';
-        });
-      if (control != content.end())
-        throw InputError("the parameter file '" + file_name +
-                         "' is not text (a control byte on line " +
-                         std::to_string(line_of(content, control - content.begin())) +
-                         "); give a deal.II parameter file (.prm)");
       return content;
     }
 

@@ -7,6 +7,8 @@
 
 #include <boost/crc.hpp>
 
+#include <cstdint>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -170,9 +172,26 @@ namespace FrictionalContact
     const std::string                               &scene) const
   {
     const std::string temporary = directory + ".new";
+    // p4est aborts the program when its save fails: the space it needs is
+    // reserved first, and a reservation that fails is a WriteError that
+    // leaves the last checkpoint as it was.
+    const std::uintmax_t bytes = expected_size(triangulation,
+                                               dof_handler,
+                                               vectors.size(),
+                                               state.size() + scene.size());
     run_on_root(comm, [&]() {
       std::filesystem::remove_all(temporary);
       std::filesystem::create_directories(temporary);
+      if (const std::string problem = space_problem(temporary, bytes);
+          !problem.empty())
+        {
+          std::error_code ignored;
+          std::filesystem::remove_all(temporary, ignored);
+          throw WriteError("cannot write the checkpoint in '" + temporary +
+                           "': " + problem + " (reserving the " +
+                           std::to_string(bytes / 1024 + 1) +
+                           " kB it needs failed)");
+        }
     });
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
@@ -200,6 +219,29 @@ namespace FrictionalContact
       std::filesystem::rename(temporary, directory);
       std::filesystem::remove_all(old);
     });
+  }
+
+
+
+  template <int dim>
+  std::uintmax_t
+  Checkpoint<dim>::expected_size(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const DoFHandler<dim>                           &dof_handler,
+    const unsigned int                               n_vectors,
+    const std::uintmax_t                             text_bytes) const
+  {
+    // The last checkpoint's size, or what the mesh (p4est's quadrants, a
+    // few dozen bytes each) and the vectors' values on each cell take,
+    // whichever is larger, with a quarter and 64 kB to spare.
+    std::uintmax_t last = 0;
+    std::error_code error;
+    for (const auto &file : std::filesystem::directory_iterator(directory, error))
+      last += file.file_size(error);
+    const std::uintmax_t cells = triangulation.n_global_active_cells();
+    const std::uintmax_t per_cell =
+      64 + sizeof(double) * dof_handler.get_fe().n_dofs_per_cell() * n_vectors;
+    return 5 * std::max(last, cells * per_cell + text_bytes) / 4 + (1 << 16);
   }
 
 

@@ -75,7 +75,7 @@ namespace FrictionalContact
                       default_load_factor,
                       Patterns::Anything(),
                       "lambda(t), a muParser expression of the time t that "
-                      "scales all loads (tractions and body force). The "
+                      "scales all loads (tractions, pressures and body force). The "
                       "default reaches the full load at t = 1.");
     prm.declare_entry("Load table",
                       "",

@@ -55,8 +55,9 @@ namespace FrictionalContact
     , checkpoint(output_directory, comm)
   {
     const std::string resume_choice = prm.get("Resume computation");
-    resume = resume_choice == "true" ||
-             (resume_choice == "auto" && checkpoint.exists());
+    resume_if_possible = resume_choice == "auto";
+    resume             = resume_choice == "true" ||
+             (resume_if_possible && checkpoint.exists());
     postprocessors.check_increments(driver.times().size());
 
     std::ostringstream parameters;
@@ -115,23 +116,97 @@ namespace FrictionalContact
   void
   Simulator<dim>::run()
   {
-    setup();
     const unsigned int n_initial = driver.times().size();
-    if (postprocessors.writes_files() ||
+    // The folder is checked and locked before anything in it is read or
+    // written (a resume repairs a checkpoint caught between renames).
+    if (resume || postprocessors.writes_files() ||
         postprocessors.checkpoint_due(n_initial, n_initial))
-      check_output_directory(output_directory, mpi_communicator);
+      {
+        check_output_directory(output_directory, mpi_communicator);
+        lock.emplace(output_directory, mpi_communicator);
+      }
+    setup();
     state.u = model.get_body().make_vector();
     state.contact_forces.assign(model.get_contact().n_local(), Tensor<1, dim>());
     const unsigned int first_increment = resume ? load_checkpoint() : 0;
+    if (first_increment == driver.times().size())
+      {
+        pcout << "Resume computation = auto: the loading history is complete "
+                 "(increment "
+              << first_increment << " of " << first_increment << " in "
+              << checkpoint.path() << "): nothing to do" << std::endl;
+        return;
+      }
     increment_solver.initialize(model);
     increment_solver.print_method();
-
-    driver.run(
-      first_increment,
-      [&](const unsigned int l) { solve_increment(l); },
-      pcout.get_stream());
+    solve_increments(first_increment);
     timer->print_wall_time_statistics(mpi_communicator);
     print_summary();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_increments(const unsigned int first_increment)
+  {
+    n_finished      = first_increment;
+    last_checkpoint = first_increment;
+    try
+      {
+        driver.run(
+          first_increment,
+          [&](const unsigned int l) { solve_increment(l); },
+          pcout.get_stream());
+      }
+    catch (const StopRequested &stop)
+      {
+        stop_on_signal(stop.signal);
+      }
+    catch (const WriteError &error)
+      {
+        throw WriteError(std::string(error.what()) + "; " + what_is_left());
+      }
+  }
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::what_is_left() const
+  {
+    if (last_checkpoint == 0)
+      return "no checkpoint was written yet: make room (free space, or raise "
+             "the quota) and run again";
+    return "the last complete checkpoint (increment " +
+           std::to_string(last_checkpoint) + ", t = " +
+           Input::to_text(driver.times()[last_checkpoint - 1]) + ") in '" +
+           checkpoint.path() +
+           "' stays valid: make room (free space, or raise the quota) and "
+           "resume with 'set Resume computation = auto'";
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_on_signal(const int signal)
+  {
+    const std::string name = RunControl::signal_name(signal);
+    const unsigned int n   = driver.times().size();
+    if (n_finished == 0)
+      throw StoppedBySignal(
+        "stopped by " + name +
+        " during increment 1: no increment finished, nothing to checkpoint; "
+        "run again from the start");
+    if (last_checkpoint != n_finished)
+      save_checkpoint(n_finished - 1);
+    throw StoppedBySignal(
+      "stopped by " + name + " after increment " + std::to_string(n_finished) +
+      " of " + std::to_string(n) +
+      " (t = " + Input::to_text(driver.times()[n_finished - 1]) +
+      "), its checkpoint in '" + checkpoint.path() +
+      "': run again with 'set Resume computation = auto' (or true) to go on");
   }
 
 
@@ -269,8 +344,13 @@ namespace FrictionalContact
                               parameters_as_run);
       });
     postprocessors.execute(result);
+    n_finished = l + 1;
     if (postprocessors.checkpoint_due(l + 1, n))
       save_checkpoint(l);
+    // A signal stops the run here, once the increment is written; an
+    // urgent one stops the contact solver earlier.
+    if (const int signal = RunControl::stop_signal(mpi_communicator))
+      throw StopRequested(signal);
   }
 
 
@@ -301,7 +381,7 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  Simulator<dim>::save_checkpoint(const unsigned int l) const
+  Simulator<dim>::save_checkpoint(const unsigned int l)
   {
     const ElasticBody<dim>       &body      = model.get_body();
     TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
@@ -322,6 +402,7 @@ namespace FrictionalContact
                     {&u_ghosted, &forces_ghosted},
                     text.str(),
                     parameters_as_run);
+    last_checkpoint = n_done;
   }
 
 
@@ -345,13 +426,15 @@ namespace FrictionalContact
     archive >> n_done >> times >> written;
     driver.restore_times(times);
     postprocessors.load_state(written);
+    if (n_done >= times.size() && resume_if_possible)
+      return n_done;
     if (n_done >= times.size())
       throw InputError("<Resume computation>: the checkpoint in '" +
                        checkpoint.path() + "' is of the last increment (" +
                        std::to_string(n_done) + " of " +
                        std::to_string(times.size()) +
                        "): the run is complete; set Resume computation = "
-                       "false to run it again");
+                       "false to run it again (auto: nothing to do)");
     pcout << "Resuming after increment " << n_done << " (t = "
           << Input::to_text(times[n_done - 1]) << ") from "
           << checkpoint.path() << std::endl;

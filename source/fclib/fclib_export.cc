@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <frictional_contact/base/plugins.h>
+#include <frictional_contact/base/files.h>
 #include <frictional_contact/fclib/fclib_export.h>
 #include <frictional_contact/base/input.h>
 
@@ -161,19 +162,7 @@ namespace FrictionalContact
               const FclibProblem  &problem,
               const FclibSolution *solution)
   {
-    std::string failure;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      try
-        {
-          write_fclib(path, problem, solution);
-        }
-      catch (const InputError &error)
-        {
-          failure = error.what();
-        }
-    failure = Utilities::MPI::broadcast(comm, failure, 0);
-    if (!failure.empty())
-      throw InputError(failure);
+    run_on_root(comm, [&]() { write_fclib(path, problem, solution); });
   }
 
 

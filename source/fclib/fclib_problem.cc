@@ -1,4 +1,5 @@
 // The exchange with FCLIB files (through libfclib) and FCLIB's error measure.
+#include <frictional_contact/base/files.h>
 #include <frictional_contact/fclib/fclib_problem.h>
 #include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/base/input.h>
@@ -370,6 +371,10 @@ namespace FrictionalContact
     if (!written || std::rename(temporary.c_str(), path.c_str()) != 0)
       {
         std::remove(temporary.c_str());
+        // HDF5 does not say why; a reservation in the same folder does.
+        const std::string space = space_problem(folder.string(), 1 << 20);
+        if (!space.empty())
+          throw WriteError("cannot write the FCLIB file '" + path + "': " + space);
         throw InputError("cannot write the FCLIB file '" + path +
                          "': check that its folder exists and is writable");
       }

@@ -46,7 +46,10 @@ namespace FrictionalContact
     prm.declare_entry("Body force",
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
-                      "Force per volume acting on the whole body.");
+                      "Force per volume acting on the whole body, as "
+                      "'f_x, f_y[, f_z]' (e.g. '0, 0, -78500' for steel's "
+                      "weight in SI units); scaled by the load factor like "
+                      "the tractions.");
     prm.leave_subsection();
   }
 

@@ -342,8 +342,14 @@ namespace FrictionalContact
     // 0.8 s of output for a 2 s solve).
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      directory + "/solution/", "solution", increment, comm, 5, n_groups);
+    std::string pvtu;
+    std::ostringstream name;
+    name << directory << "/solution/solution_" << std::setw(5)
+         << std::setfill('0') << increment << ".pvtu";
+    run_collective_write(comm, name.str(), [&]() {
+      pvtu = data_out.write_vtu_with_pvtu_record(
+        directory + "/solution/", "solution", increment, comm, 5, n_groups);
+    });
 
     times_and_names.emplace_back(time, "solution/" + pvtu);
     run_on_root(comm, [&]() {

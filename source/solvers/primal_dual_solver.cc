@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/base/run_control.h>
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/solvers/primal_dual_solver.h>
 #include <frictional_contact/solvers/progress_rules.h>
@@ -198,6 +199,7 @@ namespace FrictionalContact
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);
+        RunControl::stop_if_urgent(du.get_mpi_communicator());
 
         if (!std::isfinite(result.last_step) || !result.residuals.finite())
           {

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/base/run_control.h>
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/solvers/semismooth_newton_preconditioner.h>
 #include <frictional_contact/solvers/progress_rules.h>
@@ -517,6 +518,7 @@ namespace FrictionalContact
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);
+        RunControl::stop_if_urgent(du.get_mpi_communicator());
         if (!result.residuals.finite())
           {
             result.failure = "NaN or infinity at Newton iteration " +

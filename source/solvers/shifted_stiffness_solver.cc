@@ -72,7 +72,8 @@ namespace FrictionalContact
                       "without contact, and the solves inside the "
                       "eigenvalue computation) by this factor. The primal "
                       "steps of the contact solver have their own tolerance, "
-                      "<Contact solver/Primal step tolerance>.");
+                      "<Contact solver/Accelerated primal-dual/Primal step "
+                      "tolerance>.");
     prm.declare_entry("Maximum iterations",
                       "10000",
                       Patterns::Integer(1),

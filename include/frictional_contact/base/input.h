@@ -47,6 +47,18 @@ namespace FrictionalContact
     using std::runtime_error::runtime_error;
   };
 
+  /**
+   * A write that failed: no space left, a quota reached, another I/O
+   * error. Its message names the file and the cause. main() prints it as
+   * one line and exits with code 74 (EX_IOERR); everything written before
+   * stays complete (each file is written to a temporary and renamed).
+   */
+  class WriteError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   namespace Input
   {
     /// Splits @p text at @p separator and trims each piece; empty pieces are dropped.

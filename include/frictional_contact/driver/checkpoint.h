@@ -35,7 +35,9 @@ namespace FrictionalContact
     exists() const;
 
     /// Saves the mesh, the @p vectors (with ghost entries), @p state and
-    /// the manifest with @p scene (the parameters as run, ShortPRM).
+    /// the manifest with @p scene (the parameters as run, ShortPRM), after
+    /// reserving the space they need; throws a WriteError, leaving the
+    /// last checkpoint as it was, if the reservation or a write fails.
     void
     save(const parallel::distributed::Triangulation<dim> &triangulation,
          const DoFHandler<dim>                           &dof_handler,
@@ -73,6 +75,14 @@ namespace FrictionalContact
     }
 
   private:
+    /// Bytes to reserve for a checkpoint of this mesh with @p n_vectors
+    /// vectors and @p text_bytes of text.
+    std::uintmax_t
+    expected_size(const parallel::distributed::Triangulation<dim> &triangulation,
+                  const DoFHandler<dim>                           &dof_handler,
+                  const unsigned int                               n_vectors,
+                  const std::uintmax_t text_bytes) const;
+
     std::string directory;
     MPI_Comm    comm;
   };

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/base/run_control.h>
 #include <frictional_contact/driver/checkpoint.h>
 #include <frictional_contact/driver/increment_driver.h>
 #include <frictional_contact/driver/increment_solver.h>
@@ -12,6 +13,7 @@
 #include <frictional_contact/postprocess/manager.h>
 
 #include <memory>
+#include <optional>
 
 namespace FrictionalContact
 {
@@ -32,7 +34,13 @@ namespace FrictionalContact
 
     Simulator(ParameterHandler &prm, const MPI_Comm comm);
 
-    /// Sets up, solves and writes the results. Throws SolverError on failure.
+    /**
+     * Sets up, solves and writes the results. Throws SolverError on failure,
+     * WriteError if a write fails (naming the last complete checkpoint),
+     * StoppedBySignal after a signal (the checkpoint of the last finished
+     * increment written), OutputFolderBusy if another run writes into the
+     * output folder.
+     */
     void
     run();
 
@@ -66,7 +74,22 @@ namespace FrictionalContact
 
     /// Writes a checkpoint after increment @p l.
     void
-    save_checkpoint(const unsigned int l) const;
+    save_checkpoint(const unsigned int l);
+
+    /// Solves the increments from @p first_increment on; stops on a signal
+    /// (StoppedBySignal) and names the last checkpoint in a WriteError.
+    void
+    solve_increments(const unsigned int first_increment);
+
+    /// After a signal: the checkpoint of the last finished increment (if
+    /// it is not written yet), then the StoppedBySignal to end the run.
+    [[noreturn]] void
+    stop_on_signal(const int signal);
+
+    /// What a failed write leaves: "the last complete checkpoint (...)
+    /// stays valid: ... resume ..." or that there is none yet.
+    std::string
+    what_is_left() const;
 
     /// Restores the state saved by save_checkpoint(); returns the number of
     /// increments done.
@@ -84,6 +107,9 @@ namespace FrictionalContact
     /// checkpoints to compare scenes.
     std::string parameters_as_run;
     bool        resume;
+    /// Whether <Resume computation> is 'auto' (a finished run is then
+    /// nothing to do, not an error).
+    bool        resume_if_possible;
 
     Model<dim>                   model;
     AdaptiveRefinement<dim>      adaptivity;
@@ -94,5 +120,11 @@ namespace FrictionalContact
     std::unique_ptr<TimerOutput> timer;
 
     State<dim> state;
+    /// Increments finished (of driver.times()), and the last one whose
+    /// checkpoint is written (0: none).
+    unsigned int n_finished      = 0;
+    unsigned int last_checkpoint = 0;
+    /// Held while the run may write into the output folder.
+    std::optional<OutputLock> lock;
   };
 } // namespace FrictionalContact
