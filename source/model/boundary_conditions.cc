@@ -86,6 +86,28 @@ namespace FrictionalContact
         }
       return result;
     }
+
+    /// "top: 0, -1; right: 2, 0" in the entry @p entry -> (boundary id,
+    /// n numbers) per item; the error shows @p example as the value part.
+    template <int dim, int n>
+    std::vector<std::pair<types::boundary_id, Tensor<1, n>>>
+    boundary_values(const std::string   &entry,
+                    const std::string   &example,
+                    ParameterHandler    &prm,
+                    const BoundaryNames &names)
+    {
+      const std::string path = "Boundary conditions/" + entry;
+      std::vector<std::pair<types::boundary_id, Tensor<1, n>>> result;
+      for (const std::string &item : Input::split(prm.get(entry), ';'))
+        {
+          const std::size_t colon = item.find(':');
+          if (colon == std::string::npos)
+            Input::fail(path, item, "expected 'boundary: " + example + "'");
+          result.emplace_back(names.id(path, Input::trim(item.substr(0, colon))),
+                              Input::parse_vector<n>(path, item.substr(colon + 1)));
+        }
+      return result;
+    }
   } // namespace
 
 
@@ -136,29 +158,12 @@ namespace FrictionalContact
                       "component, separated by ';'");
       }
 
-    const std::string traction_entry = "Boundary conditions/Traction";
-    for (const std::string &item : Input::split(prm.get("Traction"), ';'))
-      {
-        const std::size_t colon = item.find(':');
-        if (colon == std::string::npos)
-          Input::fail(traction_entry, item, "expected 'boundary: t_x, t_y'");
-        const types::boundary_id id =
-          names.id(traction_entry, Input::trim(item.substr(0, colon)));
-        tractions[id] += Input::parse_vector<dim>(traction_entry,
-                                                  item.substr(colon + 1));
-      }
-
-    const std::string pressure_entry = "Boundary conditions/Pressure";
-    for (const std::string &item : Input::split(prm.get("Pressure"), ';'))
-      {
-        const std::size_t colon = item.find(':');
-        if (colon == std::string::npos)
-          Input::fail(pressure_entry, item, "expected 'boundary: p'");
-        const types::boundary_id id =
-          names.id(pressure_entry, Input::trim(item.substr(0, colon)));
-        pressures[id] += Input::parse_vector<1>(pressure_entry,
-                                                item.substr(colon + 1))[0];
-      }
+    for (const auto &[id, traction] :
+         boundary_values<dim, dim>("Traction", "t_x, t_y", prm, names))
+      tractions[id] += traction;
+    for (const auto &[id, pressure] :
+         boundary_values<dim, 1>("Pressure", "p", prm, names))
+      pressures[id] += pressure[0];
 
     body_force = Input::parse_vector<dim>("Boundary conditions/Body force",
                                           prm.get("Body force"));
