@@ -1,0 +1,60 @@
+#pragma once
+
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/table.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * The mortar integrals of one slave face against one master face, the
+   * geometric kernel of MortarInterface (no mesh, no MPI; unit-tested on
+   * flat non-matching interfaces whose integrals are known by hand). A face
+   * of a Q1 cell is a 2-node segment in 2D and a bilinear quad in 3D, its
+   * vertices in deal.II's order. The slave side carries the dual
+   * (biorthogonal) basis phi_a = sum_b A_ab N_b with A = D_e M_e^-1 of the
+   * face (Wohlmuth), so that int phi_a N_b = delta_ab int N_b.
+   *
+   * The overlap is found on the slave face's plane (its line in 2D): the
+   * master face is projected onto it along the slave face's normal, the two
+   * polygons are clipped (Sutherland-Hodgman; segments overlap in 2D), the
+   * overlap is cut into triangles from its centroid and integrated with a
+   * 7-point degree-5 rule (2 Gauss points in 2D), each point mapped back to
+   * both faces. On flat faces with affine geometry the result is exact.
+   */
+  namespace MortarSegments
+  {
+    template <int dim>
+    using FaceVertices =
+      std::array<Point<dim>, GeometryInfo<dim - 1>::vertices_per_cell>;
+
+    /**
+     * M(a, b) = int phi_a N_b over the overlap of @p slave and @p master,
+     * for slave vertex a and master vertex b; @p slave_normal is the slave
+     * face's outward unit normal (at its centre). Zero if they do not
+     * overlap or do not face each other. The row sums are the weights
+     * D_aa = int phi_a over the covered part.
+     */
+    template <int dim>
+    Table<2, double>
+    face_integrals(const FaceVertices<dim> &slave,
+                   const Tensor<1, dim>    &slave_normal,
+                   const FaceVertices<dim> &master);
+
+    /// The dual basis coefficients A = D_e M_e^-1 of the slave face
+    /// (exposed for the tests: biorthogonality on any quad).
+    template <int dim>
+    Table<2, double>
+    dual_coefficients(const FaceVertices<dim> &slave);
+
+    /// The Q1 shape values of a face at the face coordinates @p xi.
+    template <int dim>
+    std::array<double, GeometryInfo<dim - 1>::vertices_per_cell>
+    shape_values(const Point<dim - 1> &xi);
+  } // namespace MortarSegments
+} // namespace FrictionalContact

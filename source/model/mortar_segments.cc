@@ -1,0 +1,346 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <frictional_contact/model/mortar_segments.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace FrictionalContact
+{
+  namespace MortarSegments
+  {
+    namespace
+    {
+      using Point2 = std::array<double, 2>;
+
+      double
+      cross_2d(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+
+      /// The point of the face at @p xi, and its two (one) tangents.
+      template <int dim>
+      Point<dim>
+      face_point(const FaceVertices<dim> &v, const Point<dim - 1> &xi)
+      {
+        const auto N = shape_values<dim>(xi);
+        Point<dim> x;
+        for (unsigned int a = 0; a < N.size(); ++a)
+          x += N[a] * v[a];
+        return x;
+      }
+
+      /// d x / d xi_k of the bilinear face at @p xi.
+      Tensor<1, 3>
+      face_tangent(const FaceVertices<3> &v, const Point<2> &xi, const unsigned int k)
+      {
+        const double x = xi[0], y = xi[1];
+        const double dN[2][4] = {{-(1 - y), 1 - y, -y, y},
+                                 {-(1 - x), -x, 1 - x, x}};
+        Tensor<1, 3> t;
+        for (unsigned int a = 0; a < 4; ++a)
+          t += dN[k][a] * v[a];
+        return t;
+      }
+
+      /// The face coordinates of the point of @p v that @p X projects to
+      /// along @p n (Newton on x(xi) + alpha n = X), clamped to [0, 1]^2.
+      Point<2>
+      inverse_map(const FaceVertices<3> &v, const Point<3> &X, const Tensor<1, 3> &n)
+      {
+        Point<2> xi(0.5, 0.5);
+        double   alpha = 0;
+        for (unsigned int iteration = 0; iteration < 30; ++iteration)
+          {
+            const Tensor<1, 3> residual =
+              face_point<3>(v, xi) + alpha * n - X;
+            FullMatrix<double> J(3, 3);
+            const Tensor<1, 3> t0 = face_tangent(v, xi, 0), t1 = face_tangent(v, xi, 1);
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                J(c, 0) = t0[c];
+                J(c, 1) = t1[c];
+                J(c, 2) = n[c];
+              }
+            J.gauss_jordan();
+            double step[3] = {0, 0, 0};
+            for (unsigned int r = 0; r < 3; ++r)
+              for (unsigned int c = 0; c < 3; ++c)
+                step[r] += J(r, c) * residual[c];
+            xi[0] -= step[0];
+            xi[1] -= step[1];
+            alpha -= step[2];
+            if (std::abs(step[0]) + std::abs(step[1]) < 1e-15)
+              break;
+          }
+        for (unsigned int k = 0; k < 2; ++k)
+          xi[k] = std::min(1., std::max(0., xi[k]));
+        return xi;
+      }
+
+      double
+      signed_area(const std::vector<Point2> &polygon)
+      {
+        double area = 0;
+        for (unsigned int i = 0; i < polygon.size(); ++i)
+          {
+            const Point2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+            area += p[0] * q[1] - q[0] * p[1];
+          }
+        return area / 2;
+      }
+
+      /// Sutherland-Hodgman: @p subject clipped by the convex polygon @p clip,
+      /// both counter-clockwise.
+      std::vector<Point2>
+      clip_polygon(std::vector<Point2> subject, const std::vector<Point2> &clip)
+      {
+        for (unsigned int i = 0; i < clip.size() && !subject.empty(); ++i)
+          {
+            const Point2 &a = clip[i], &b = clip[(i + 1) % clip.size()];
+            const auto side = [&](const Point2 &p) {
+              return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+            };
+            std::vector<Point2> kept;
+            for (unsigned int k = 0; k < subject.size(); ++k)
+              {
+                const Point2 &p = subject[k], &q = subject[(k + 1) % subject.size()];
+                const double  sp = side(p), sq = side(q);
+                if (sp >= 0)
+                  kept.push_back(p);
+                if ((sp >= 0) != (sq >= 0))
+                  {
+                    const double t = sp / (sp - sq);
+                    kept.push_back({{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}});
+                  }
+              }
+            subject = std::move(kept);
+          }
+        return subject;
+      }
+
+      /// The polygon without vertices closer than @p tolerance to the one
+      /// before (clipping repeats a vertex that lies on a clip edge).
+      std::vector<Point2>
+      without_duplicates(const std::vector<Point2> &polygon, const double tolerance)
+      {
+        std::vector<Point2> result;
+        for (const Point2 &p : polygon)
+          if (result.empty() || std::hypot(p[0] - result.back()[0],
+                                           p[1] - result.back()[1]) > tolerance)
+            result.push_back(p);
+        while (result.size() > 1 &&
+               std::hypot(result[0][0] - result.back()[0],
+                          result[0][1] - result.back()[1]) <= tolerance)
+          result.pop_back();
+        return result;
+      }
+
+      /// Radon's 7-point rule on the reference triangle (degree 5; the
+      /// weights add up to its area, 1/2): (r, s, weight).
+      std::vector<std::array<double, 3>>
+      triangle_rule()
+      {
+        std::vector<std::array<double, 3>> rule = {{{1. / 3, 1. / 3, 9. / 80}}};
+        for (const double sign : {1., -1.})
+          {
+            const double a = (6 - sign * std::sqrt(15.)) / 21;
+            const double w = (155 - sign * std::sqrt(15.)) / 2400;
+            rule.push_back({{a, a, w}});
+            rule.push_back({{1 - 2 * a, a, w}});
+            rule.push_back({{a, 1 - 2 * a, w}});
+          }
+        return rule;
+      }
+
+
+
+      Table<2, double>
+      integrals_2d(const FaceVertices<2> &slave,
+                   const Tensor<1, 2>    &normal,
+                   const FaceVertices<2> &master)
+      {
+        Table<2, double>   M(2, 2);
+        const Tensor<1, 2> edge   = slave[1] - slave[0];
+        const double       length = edge.norm();
+        const auto slave_parameter = [&](const Point<2> &y) {
+          return (y - slave[0]) * edge / (length * length);
+        };
+        const double s0 = slave_parameter(master[0]), s1 = slave_parameter(master[1]);
+        const double low = std::max(0., std::min(s0, s1));
+        const double high = std::min(1., std::max(s0, s1));
+        const double across = cross_2d(master[1] - master[0], normal);
+        if (high - low <= 1e-12 || std::abs(across) < 1e-14 * length)
+          return M;
+        const Table<2, double> A = dual_coefficients<2>(slave);
+        const QGauss<1>        gauss(2);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            const double   s   = low + gauss.point(q)[0] * (high - low);
+            const double   JxW = gauss.weight(q) * (high - low) * length;
+            const Point<2> x   = slave[0] + s * edge;
+            const double   t   = cross_2d(x - master[0], normal) / across;
+            const auto     Ns  = shape_values<2>(Point<1>(s));
+            const auto     Nm  = shape_values<2>(Point<1>(std::min(1., std::max(0., t))));
+            for (unsigned int a = 0; a < 2; ++a)
+              {
+                const double phi = A(a, 0) * Ns[0] + A(a, 1) * Ns[1];
+                for (unsigned int b = 0; b < 2; ++b)
+                  M(a, b) += JxW * phi * Nm[b];
+              }
+          }
+        return M;
+      }
+
+
+
+      Table<2, double>
+      integrals_3d(const FaceVertices<3> &slave,
+                   const Tensor<1, 3>    &normal,
+                   const FaceVertices<3> &master)
+      {
+        Table<2, double> M(4, 4);
+        const Point<3>   centre = face_point<3>(slave, Point<2>(0.5, 0.5));
+        Tensor<1, 3>     e1     = face_tangent(slave, Point<2>(0.5, 0.5), 0);
+        e1 -= (e1 * normal) * normal;
+        e1 /= e1.norm();
+        const Tensor<1, 3> e2        = cross_product_3d(normal, e1);
+        const auto         in_plane  = [&](const Point<3> &p) {
+          return Point2{{(p - centre) * e1, (p - centre) * e2}};
+        };
+        // Vertices in cyclic order (deal.II numbers them lexicographically),
+        // counter-clockwise about the slave normal.
+        const auto polygon = [&](const FaceVertices<3> &v) {
+          std::vector<Point2> p = {
+            in_plane(v[0]), in_plane(v[1]), in_plane(v[3]), in_plane(v[2])};
+          if (signed_area(p) < 0)
+            std::reverse(p.begin(), p.end());
+          return p;
+        };
+        const std::vector<Point2> slave_polygon = polygon(slave);
+        const double              slave_area    = signed_area(slave_polygon);
+        const double scale = std::sqrt(slave_area);
+        const std::vector<Point2> overlap = without_duplicates(
+          clip_polygon(slave_polygon, polygon(master)), 1e-12 * scale);
+        if (overlap.size() < 3 || signed_area(overlap) <= 1e-12 * slave_area)
+          return M;
+
+        const Table<2, double> A = dual_coefficients<3>(slave);
+        Point2                 c = {{0, 0}};
+        for (const Point2 &p : overlap)
+          for (unsigned int k = 0; k < 2; ++k)
+            c[k] += p[k] / overlap.size();
+        static const auto rule = triangle_rule();
+        for (unsigned int i = 0; i < overlap.size(); ++i)
+          {
+            const Point2 &p = overlap[i], &q = overlap[(i + 1) % overlap.size()];
+            const double  area = ((p[0] - c[0]) * (q[1] - c[1]) -
+                                 (q[0] - c[0]) * (p[1] - c[1])) / 2;
+            for (const auto &[r, s, weight] : rule)
+              {
+                const double u = c[0] + r * (p[0] - c[0]) + s * (q[0] - c[0]);
+                const double v = c[1] + r * (p[1] - c[1]) + s * (q[1] - c[1]);
+                const Point<3> X   = centre + u * e1 + v * e2;
+                const auto     Ns  = shape_values<3>(inverse_map(slave, X, normal));
+                const auto     Nm  = shape_values<3>(inverse_map(master, X, normal));
+                const double   JxW = 2 * area * weight;
+                for (unsigned int a = 0; a < 4; ++a)
+                  {
+                    double phi = 0;
+                    for (unsigned int b = 0; b < 4; ++b)
+                      phi += A(a, b) * Ns[b];
+                    for (unsigned int b = 0; b < 4; ++b)
+                      M(a, b) += JxW * phi * Nm[b];
+                  }
+              }
+          }
+        return M;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    std::array<double, GeometryInfo<dim - 1>::vertices_per_cell>
+    shape_values(const Point<dim - 1> &xi)
+    {
+      if constexpr (dim == 2)
+        return {{1 - xi[0], xi[0]}};
+      else
+        return {{(1 - xi[0]) * (1 - xi[1]),
+                 xi[0] * (1 - xi[1]),
+                 (1 - xi[0]) * xi[1],
+                 xi[0] * xi[1]}};
+    }
+
+
+
+    template <int dim>
+    Table<2, double>
+    dual_coefficients(const FaceVertices<dim> &slave)
+    {
+      constexpr unsigned int n = GeometryInfo<dim - 1>::vertices_per_cell;
+      const QGauss<dim - 1>  gauss(3);
+      FullMatrix<double>     mass(n, n);
+      std::array<double, n>  lumped{};
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          double jacobian;
+          if constexpr (dim == 2)
+            jacobian = slave[0].distance(slave[1]);
+          else
+            jacobian = cross_product_3d(face_tangent(slave, gauss.point(q), 0),
+                                        face_tangent(slave, gauss.point(q), 1))
+                         .norm();
+          const auto   N  = shape_values<dim>(gauss.point(q));
+          const double dx = gauss.weight(q) * jacobian;
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              lumped[a] += N[a] * dx;
+              for (unsigned int b = 0; b < n; ++b)
+                mass(a, b) += N[a] * N[b] * dx;
+            }
+        }
+      mass.gauss_jordan();
+      Table<2, double> A(n, n);
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          A(a, b) = lumped[a] * mass(a, b);
+      return A;
+    }
+
+
+
+    template <int dim>
+    Table<2, double>
+    face_integrals(const FaceVertices<dim> &slave,
+                   const Tensor<1, dim>    &slave_normal,
+                   const FaceVertices<dim> &master)
+    {
+      if constexpr (dim == 2)
+        return integrals_2d(slave, slave_normal, master);
+      else
+        return integrals_3d(slave, slave_normal, master);
+    }
+
+    template std::array<double, 2>
+    shape_values<2>(const Point<1> &);
+    template std::array<double, 4>
+    shape_values<3>(const Point<2> &);
+    template Table<2, double>
+    dual_coefficients<2>(const FaceVertices<2> &);
+    template Table<2, double>
+    dual_coefficients<3>(const FaceVertices<3> &);
+    template Table<2, double>
+    face_integrals<2>(const FaceVertices<2> &,
+                      const Tensor<1, 2> &,
+                      const FaceVertices<2> &);
+    template Table<2, double>
+    face_integrals<3>(const FaceVertices<3> &,
+                      const Tensor<1, 3> &,
+                      const FaceVertices<3> &);
+  } // namespace MortarSegments
+} // namespace FrictionalContact
