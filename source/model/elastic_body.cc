@@ -15,14 +15,16 @@ namespace FrictionalContact
   template <int dim>
   ElasticBody<dim>::ElasticBody(
     const parallel::distributed::Triangulation<dim> &triangulation,
-    const LinearElasticMaterial<dim>                &material,
-    const BoundaryConditions<dim>                   &conditions)
-    : material(material)
+    const Materials<dim>                            &materials,
+    const BoundaryConditions<dim>                   &conditions,
+    const std::map<std::string, types::material_id> &bodies)
+    : materials(materials)
     , conditions(conditions)
+    , bodies(bodies)
     , mpi_communicator(triangulation.get_communicator())
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
-    , volumetric(material)
+    , volumetric(materials)
   {}
 
 
@@ -132,6 +134,7 @@ namespace FrictionalContact
     FullMatrix<double>              &cell_matrix    = scratch.cell_matrix;
     dealii::Vector<double>          &cell_load      = scratch.cell_load;
     const FEValuesExtractors::Vector displacement(0);
+    const LinearElasticMaterial<dim> &material     = materials.of(cell->material_id());
     const SymmetricTensor<4, dim>   &C             = material.stress_strain_tensor();
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
 
@@ -438,40 +441,61 @@ namespace FrictionalContact
   void
   ElasticBody<dim>::check_rigid_body_motion_is_prevented() const
   {
-    // The fixed dofs prevent every rigid motion iff the rigid-body modes,
-    // restricted to the fixed dofs, are linearly independent: their Gram
-    // matrix is then positive definite.
+    // The fixed dofs of a body prevent its rigid motions iff the rigid-body
+    // modes, restricted to them, are linearly independent: their Gram
+    // matrix is then positive definite. Bodies share no vertex.
     const std::vector<std::vector<double>> modes   = rigid_body_modes();
     const unsigned int                     n_modes = modes.size();
-    std::vector<double>                    gram(n_modes * n_modes, 0.);
-    unsigned int                           row = 0;
+    std::map<types::material_id, unsigned int> body_index;
+    for (const auto &[name, id] : bodies)
+      body_index.emplace(id, body_index.size());
+    std::vector<int> body_of_row(owned_dofs.n_elements(), -1);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            if (const auto g = cell->vertex_dof_index(v, c); owned_dofs.is_element(g))
+              body_of_row[owned_dofs.index_within_set(g)] =
+                body_index.at(cell->material_id());
+
+    std::vector<double> gram(bodies.size() * n_modes * n_modes, 0.);
+    unsigned int        row = 0;
     for (const auto g : owned_dofs)
       {
-        if (is_fixed(g))
+        if (is_fixed(g) && body_of_row[row] >= 0)
           for (unsigned int a = 0; a < n_modes; ++a)
             for (unsigned int b = 0; b < n_modes; ++b)
-              gram[a * n_modes + b] += modes[a][row] * modes[b][row];
+              gram[(body_of_row[row] * n_modes + a) * n_modes + b] +=
+                modes[a][row] * modes[b][row];
         ++row;
       }
     Utilities::MPI::sum(gram, mpi_communicator, gram);
 
-    LAPACKFullMatrix<double> matrix(n_modes, n_modes);
-    double                   scale = 0;
-    for (unsigned int a = 0; a < n_modes; ++a)
-      for (unsigned int b = 0; b < n_modes; ++b)
-        {
-          matrix(a, b) = gram[a * n_modes + b];
-          scale        = std::max(scale, std::abs(matrix(a, b)));
-        }
-    matrix.compute_eigenvalues();
-    double smallest = std::numeric_limits<double>::max();
-    for (unsigned int a = 0; a < n_modes; ++a)
-      smallest = std::min(smallest, matrix.eigenvalue(a).real());
-    if (!(scale > 0) || smallest < 1e-10 * scale)
-      throw InputError(
-        "<Boundary conditions/Fixed boundaries> does not hold the body against "
-        "rigid-body motion (translation or rotation): fix more boundaries or "
-        "more components, e.g. 'set Fixed boundaries = left'");
+    for (const auto &[name, id] : bodies)
+      {
+        const unsigned int       k = body_index.at(id);
+        LAPACKFullMatrix<double> matrix(n_modes, n_modes);
+        double                   scale = 0;
+        for (unsigned int a = 0; a < n_modes; ++a)
+          for (unsigned int b = 0; b < n_modes; ++b)
+            {
+              matrix(a, b) = gram[(k * n_modes + a) * n_modes + b];
+              scale        = std::max(scale, std::abs(matrix(a, b)));
+            }
+        matrix.compute_eigenvalues();
+        double smallest = std::numeric_limits<double>::max();
+        for (unsigned int a = 0; a < n_modes; ++a)
+          smallest = std::min(smallest, matrix.eigenvalue(a).real());
+        if (!(scale > 0) || smallest < 1e-10 * scale)
+          throw InputError(
+            "<Boundary conditions/Fixed boundaries> does not hold " +
+            (bodies.size() == 1 ? std::string("the body") :
+                                  "the body '" + name + "'") +
+            " against rigid-body motion (translation or rotation); a body "
+            "held by nothing but contact is not allowed: fix or prescribe "
+            "more boundaries or components, e.g. 'set Fixed boundaries = " +
+            (bodies.size() == 1 ? std::string("left") : name + " left") + "'");
+      }
   }
 
   template class ElasticBody<2>;

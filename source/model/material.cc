@@ -1,6 +1,8 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/material.h>
 
+#include <cmath>
+
 namespace FrictionalContact
 {
   template <int dim>
@@ -10,15 +12,18 @@ namespace FrictionalContact
     prm.enter_subsection("Material");
     prm.declare_entry("Young's modulus",
                       "1",
-                      Patterns::Double(0.),
-                      "Young's modulus E of the body (force/area, > 0).");
+                      Patterns::Anything(),
+                      "Young's modulus E (force/area, > 0). Like every "
+                      "entry of this subsection, one value for all bodies, "
+                      "or one per body of the geometry: 'base: 1000; "
+                      "block: 1'.");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
-                      Patterns::Double(-1., 0.5),
-                      "Poisson's ratio nu of the body, in (-1, 0.5).");
+                      Patterns::Anything(),
+                      "Poisson's ratio nu, in (-1, 0.5).");
     prm.declare_entry("Two-dimensional model",
                       "plane strain",
-                      Patterns::Selection("plane strain|plane stress"),
+                      Patterns::Anything(),
                       "How a 2D computation models the third direction: "
                       "plane strain (a long body, the usual default) or "
                       "plane stress (a thin plate, as in Kanno's example I). "
@@ -26,7 +31,7 @@ namespace FrictionalContact
     prm.declare_entry(
       "Formulation",
       "auto",
-      Patterns::Selection("auto|standard|B-bar"),
+      Patterns::Anything(),
       "The element: 'standard' Q1, or 'B-bar', the mean-dilatation Q1 "
       "element (Hughes; the volumetric strain replaced by its cell average, "
       "which is Q1-P0 with the pressure condensed), which does not lock "
@@ -38,15 +43,70 @@ namespace FrictionalContact
 
 
 
+  namespace
+  {
+    /// The value of the entry @p entry of subsection Material for @p body:
+    /// the whole text, or the part after 'body:' in 'a: 1; body: 2'.
+    std::string
+    value_for(ParameterHandler &prm, const std::string &entry, const std::string &body)
+    {
+      const std::string text = prm.get(entry);
+      if (text.find(':') == std::string::npos)
+        return Input::trim(text);
+      for (const std::string &item : Input::split(text, ';'))
+        {
+          const std::size_t colon = item.find(':');
+          if (colon == std::string::npos)
+            Input::fail("Material/" + entry, text,
+                        "one value for every body, or 'body: value' for each "
+                        "body, separated by ';'");
+          if (Input::trim(item.substr(0, colon)) == body)
+            return Input::trim(item.substr(colon + 1));
+        }
+      Input::fail("Material/" + entry, text, "a value for the body '" + body + "'");
+    }
+
+    /// The number in @p text, or an error naming the entry.
+    double
+    number(const std::string &entry, const std::string &text)
+    {
+      std::size_t end = 0;
+      double      value;
+      try
+        {
+          value = std::stod(text, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      if (end == 0 || end != text.size() || !std::isfinite(value))
+        Input::fail("Material/" + entry, text, "a number is expected");
+      return value;
+    }
+  } // namespace
+
+
+
   template <int dim>
-  LinearElasticMaterial<dim>::LinearElasticMaterial(ParameterHandler &prm)
+  LinearElasticMaterial<dim>::LinearElasticMaterial(ParameterHandler  &prm,
+                                                    const std::string &body)
   {
     prm.enter_subsection("Material");
-    youngs_modulus = prm.get_double("Young's modulus");
-    poissons_ratio = prm.get_double("Poisson's ratio");
-    plane_stress   = dim == 2 && prm.get("Two-dimensional model") == "plane stress";
-    const std::string formulation = prm.get("Formulation");
+    const std::string young   = value_for(prm, "Young's modulus", body);
+    const std::string poisson = value_for(prm, "Poisson's ratio", body);
+    const std::string model   = value_for(prm, "Two-dimensional model", body);
+    const std::string formulation = value_for(prm, "Formulation", body);
     prm.leave_subsection();
+    youngs_modulus = number("Young's modulus", young);
+    poissons_ratio = number("Poisson's ratio", poisson);
+    if (model != "plane strain" && model != "plane stress")
+      Input::fail("Material/Two-dimensional model", model,
+                  "'plane strain' or 'plane stress' is expected");
+    if (formulation != "auto" && formulation != "standard" && formulation != "B-bar")
+      Input::fail("Material/Formulation", formulation,
+                  "'auto', 'standard' or 'B-bar' is expected");
+    plane_stress = dim == 2 && model == "plane stress";
 
     if (!(youngs_modulus > 0))
       Input::fail("Material/Young's modulus",
@@ -144,6 +204,71 @@ namespace FrictionalContact
            "= B-bar (or auto, which picks it above nu = 0.45)";
   }
 
+  template <int dim>
+  Materials<dim>::Materials(ParameterHandler                                &prm,
+                            const std::map<std::string, types::material_id> &bodies)
+  {
+    for (const auto &[name, id] : bodies)
+      {
+        materials[id] = std::make_unique<LinearElasticMaterial<dim>>(prm, name);
+        names[id]     = name;
+      }
+  }
+
+
+
+  template <int dim>
+  const LinearElasticMaterial<dim> &
+  Materials<dim>::of(const types::material_id id) const
+  {
+    const auto it = materials.find(id);
+    Assert(it != materials.end(), ExcMessage("a cell of no body"));
+    return *it->second;
+  }
+
+
+
+  template <int dim>
+  bool
+  Materials<dim>::any_mean_dilatation() const
+  {
+    for (const auto &[id, material] : materials)
+      if (material->mean_dilatation)
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Materials<dim>::describe() const
+  {
+    if (materials.size() == 1)
+      return materials.begin()->second->describe();
+    std::string text;
+    for (const auto &[id, material] : materials)
+      text += (text.empty() ? "" : "; ") + names.at(id) + ": " + material->describe();
+    return text;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  Materials<dim>::locking_warnings() const
+  {
+    std::vector<std::string> warnings;
+    for (const auto &[id, material] : materials)
+      if (const std::string warning = material->locking_warning(); !warning.empty())
+        warnings.push_back(materials.size() == 1 ?
+                             warning :
+                             warning + " (body '" + names.at(id) + "')");
+    return warnings;
+  }
+
   template class LinearElasticMaterial<2>;
   template class LinearElasticMaterial<3>;
+  template class Materials<2>;
+  template class Materials<3>;
 } // namespace FrictionalContact

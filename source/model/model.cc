@@ -55,14 +55,19 @@ namespace FrictionalContact
     prm.leave_subsection();
 
     geometry->create_coarse_mesh(triangulation);
+    bodies = geometry->body_names();
+    if (bodies.size() == 1)
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        cell->set_material_id(bodies.begin()->second);
     boundary_names = BoundaryNames(geometry->boundary_names(),
                                    boundary_ids_in(triangulation));
-    material = std::make_unique<LinearElasticMaterial<dim>>(prm);
+    materials = std::make_unique<Materials<dim>>(prm, bodies);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
     body = std::make_unique<ElasticBody<dim>>(triangulation,
-                                              *material,
-                                              *boundary_conditions);
+                                              *materials,
+                                              *boundary_conditions,
+                                              bodies);
     contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
   }
 
@@ -162,8 +167,8 @@ namespace FrictionalContact
   void
   Model<dim>::print_summary(const ConditionalOStream &out) const
   {
-    out << "Scene: " << dim << "D, " << material->describe() << std::endl;
-    if (const std::string warning = material->locking_warning(); !warning.empty())
+    out << "Scene: " << dim << "D, " << materials->describe() << std::endl;
+    for (const std::string &warning : materials->locking_warnings())
       out << warning << std::endl;
     for (const std::string &note : boundary_conditions->overridden)
       out << "Note: " << note << std::endl;

@@ -17,23 +17,38 @@ namespace FrictionalContact
     {
       return 4. * material.shear_modulus + 2. * material.shear_modulus / dim;
     }
+
+
+
+    /// kappa - kappa_0: the part of the bulk modulus the split takes out
+    /// (0: none, the material is not B-bar or not stiff enough).
+    template <int dim>
+    double
+    penalty_modulus(const LinearElasticMaterial<dim> &material)
+    {
+      return material.mean_dilatation ?
+               std::max(0., material.bulk_modulus - reduced_bulk_modulus(material)) :
+               0.;
+    }
+
+
+
+    /// 1 / kappa_p + 1 / M_0, per volume, of the approximate Schur complement.
+    template <int dim>
+    double
+    schur_compliance(const LinearElasticMaterial<dim> &material)
+    {
+      return 1. / penalty_modulus(material) +
+             1. / (reduced_bulk_modulus(material) +
+                   2. * material.shear_modulus * (dim - 1.) / dim);
+    }
   } // namespace
 
 
 
   template <int dim>
-  VolumetricBlocks<dim>::VolumetricBlocks(
-    const LinearElasticMaterial<dim> &material)
-    : penalty_modulus(
-        material.mean_dilatation ?
-          std::max(0., material.bulk_modulus - reduced_bulk_modulus(material)) :
-          0.)
-    , schur_compliance(
-        penalty_modulus > 0 ?
-          1. / penalty_modulus +
-            1. / (reduced_bulk_modulus(material) +
-                  2. * material.shear_modulus * (dim - 1.) / dim) :
-          0.)
+  VolumetricBlocks<dim>::VolumetricBlocks(const Materials<dim> &materials)
+    : materials(materials)
     , cell_fe(0)
   {}
 
@@ -45,6 +60,13 @@ namespace FrictionalContact
                                const AffineConstraints<double> &constraints,
                                const TrilinosWrappers::SparseMatrix &stiffness)
   {
+    any_penalty = false;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        any_penalty =
+          any_penalty || penalty_modulus(materials.of(cell->material_id())) > 0;
+    any_penalty = Utilities::MPI::logical_or(any_penalty,
+                                             stiffness.get_mpi_communicator());
     if (!active())
       return;
     const MPI_Comm comm = stiffness.get_mpi_communicator();
@@ -106,15 +128,17 @@ namespace FrictionalContact
     const std::vector<types::global_dof_index>           &dof_indices,
     const AffineConstraints<double>                      &constraints)
   {
-    const unsigned int n = dof_indices.size();
+    const LinearElasticMaterial<dim> &material = materials.of(cell->material_id());
+    const double       penalty = penalty_modulus(material);
+    const unsigned int n       = dof_indices.size();
     for (unsigned int i = 0; i < n; ++i)
       {
         for (unsigned int j = 0; j < n; ++j)
-          cell_matrix(i, j) = cell_stiffness(i, j) - penalty_modulus *
+          cell_matrix(i, j) = cell_stiffness(i, j) - penalty *
                                                        divergence_integral[i] *
                                                        divergence_integral[j] /
                                                        volume;
-        cell_row(0, i) = divergence_integral[i];
+        cell_row(0, i) = penalty > 0 ? divergence_integral[i] : 0.;
       }
     constraints.distribute_local_to_global(cell_matrix, dof_indices, reduced_stiffness);
 
@@ -124,12 +148,18 @@ namespace FrictionalContact
     numbered->get_dof_indices(row);
     no_constraints.distribute_local_to_global(
       cell_row, row, constraints, dof_indices, divergence);
-    compliance[row[0]]    = volume / penalty_modulus;
-    inverse_schur[row[0]] = 1. / (volume * schur_compliance);
+    if (penalty == 0)
+      {
+        // A body without the split: its cells' pressures stay zero.
+        compliance[row[0]] = inverse_schur[row[0]] = row_weight[row[0]] = 1;
+        return;
+      }
+    compliance[row[0]]    = volume / penalty;
+    inverse_schur[row[0]] = 1. / (volume * schur_compliance(material));
     double row_norm = 0;
     for (unsigned int i = 0; i < n; ++i)
       row_norm += divergence_integral[i] * divergence_integral[i];
-    row_weight[row[0]] = std::sqrt(row_norm) * penalty_modulus / volume;
+    row_weight[row[0]] = std::sqrt(row_norm) * penalty / volume;
   }
 
 

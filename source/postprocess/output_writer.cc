@@ -31,10 +31,10 @@ namespace FrictionalContact
     class VonMisesStress : public DataPostprocessorScalar<dim>
     {
     public:
-      VonMisesStress(const LinearElasticMaterial<dim> &material,
+      VonMisesStress(const Materials<dim>             &materials,
                      const dealii::Vector<double>     &mean_dilatation)
         : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
-        , material(material)
+        , materials(materials)
         , mean_dilatation(mean_dilatation)
       {}
 
@@ -43,6 +43,9 @@ namespace FrictionalContact
         const DataPostprocessorInputs::Vector<dim> &inputs,
         std::vector<dealii::Vector<double>>        &computed) const override
       {
+        const auto cell = inputs.template get_cell<dim>();
+        const LinearElasticMaterial<dim> &material =
+          materials.of(cell->material_id());
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             Tensor<2, dim> gradient;
@@ -51,8 +54,7 @@ namespace FrictionalContact
             const SymmetricTensor<2, dim> strain = symmetrize(gradient);
             const double                  theta =
               material.mean_dilatation ?
-                                 mean_dilatation[inputs.template get_cell<dim>()
-                                    ->active_cell_index()] :
+                                 mean_dilatation[cell->active_cell_index()] :
                                  trace(strain);
             const SymmetricTensor<2, dim> stress = material.stress(strain, theta);
             SymmetricTensor<2, 3> s;
@@ -66,7 +68,7 @@ namespace FrictionalContact
       }
 
     private:
-      const LinearElasticMaterial<dim> &material;
+      const Materials<dim>             &materials;
       const dealii::Vector<double>     &mean_dilatation;
     };
 
@@ -158,14 +160,14 @@ namespace FrictionalContact
                       result.time,
                       model.get_body(),
                       model.get_contact(),
-                      model.get_material(),
+                      model.get_materials(),
                       result.state.u,
                       result.outcome.results);
     if (write_csv)
       write_csv_files(result.increment,
                       model.get_body(),
                       model.get_contact(),
-                      model.get_material(),
+                      model.get_materials(),
                       result.state.u,
                       result.outcome.results);
     return {};
@@ -220,7 +222,7 @@ namespace FrictionalContact
                                      const double                      time,
                                      const ElasticBody<dim>           &body,
                                      const ContactOperator<dim>       &contact,
-                                     const LinearElasticMaterial<dim> &material,
+                                     const Materials<dim>              &materials,
                                      const Vector                     &u,
                                      const ContactResults<dim>        &results)
   {
@@ -314,14 +316,23 @@ namespace FrictionalContact
                              vector_field);
     const dealii::Vector<double> mean_dilatation =
       body.mean_volumetric_strain(u_ghosted);
-    const VonMisesStress<dim> von_mises(material, mean_dilatation);
+    const VonMisesStress<dim> von_mises(materials, mean_dilatation);
     data_out.add_data_vector(u_ghosted, von_mises);
     // The mean stress of each cell, sigma_m = K theta_bar (tension
     // positive; its negative is the pressure of an incompressible body).
+    // and the body (material id) of each cell.
     dealii::Vector<float> mean_stress(triangulation.n_active_cells());
-    for (unsigned int c = 0; c < mean_stress.size(); ++c)
-      mean_stress[c] = material.mean_stress(mean_dilatation[c]);
+    dealii::Vector<float> body_id(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int c = cell->active_cell_index();
+          mean_stress[c] =
+            materials.of(cell->material_id()).mean_stress(mean_dilatation[c]);
+          body_id[c] = cell->material_id();
+        }
     data_out.add_data_vector(mean_stress, "mean_stress");
+    data_out.add_data_vector(body_id, "body");
     data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
     data_out.add_data_vector(scalar_dof_handler,
                              state_ghosted,
@@ -366,7 +377,7 @@ namespace FrictionalContact
   OutputWriter<dim>::write_csv_files(const unsigned int          increment,
                                      const ElasticBody<dim>     &body,
                                      const ContactOperator<dim> &contact,
-                                     const LinearElasticMaterial<dim> &material,
+                                     const Materials<dim>              &materials,
                                      const Vector               &u,
                                      const ContactResults<dim>  &results) const
   {
@@ -440,7 +451,7 @@ namespace FrictionalContact
                        comm);
 
     std::string stress_header;
-    rows = Postprocess::cell_stress_rows(body, material, u, stress_header);
+    rows = Postprocess::cell_stress_rows(body, materials, u, stress_header);
     Postprocess::write_sorted_table(
       directory + "/stress-" + suffix.str(), stress_header, rows, dim, comm);
   }

@@ -46,7 +46,7 @@ namespace FrictionalContact
     template <int dim>
     std::vector<std::string>
     cell_stress_rows(const ElasticBody<dim>              &body,
-                     const LinearElasticMaterial<dim>    &material,
+                     const Materials<dim>                &materials,
                      const TrilinosWrappers::MPI::Vector &u,
                      std::string                         &header)
     {
@@ -82,6 +82,8 @@ namespace FrictionalContact
             fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                      strain);
             const double theta = theta_bar[cell->active_cell_index()];
+            const LinearElasticMaterial<dim> &material =
+              materials.of(cell->material_id());
             const SymmetricTensor<2, dim> stress = material.stress(
               strain[0], material.mean_dilatation ? theta : trace(strain[0]));
             std::ostringstream row;
@@ -104,12 +106,12 @@ namespace FrictionalContact
 
     template std::vector<std::string>
     cell_stress_rows(const ElasticBody<2> &,
-                     const LinearElasticMaterial<2> &,
+                     const Materials<2> &,
                      const TrilinosWrappers::MPI::Vector &,
                      std::string &);
     template std::vector<std::string>
     cell_stress_rows(const ElasticBody<3> &,
-                     const LinearElasticMaterial<3> &,
+                     const Materials<3> &,
                      const TrilinosWrappers::MPI::Vector &,
                      std::string &);
   } // namespace Postprocess

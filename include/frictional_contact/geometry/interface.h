@@ -47,6 +47,18 @@ namespace FrictionalContact
       /// Symbolic names of the boundary ids, usable in the parameter file.
       virtual std::map<std::string, types::boundary_id>
       boundary_names() const = 0;
+
+      /**
+       * The bodies of the scene, by name, and the material id their cells
+       * carry. One body by default, "body", whose cells the model gives
+       * material id 0; a geometry that makes several bodies sets the ids of
+       * their coarse cells and names them here.
+       */
+      virtual std::map<std::string, types::material_id>
+      body_names() const
+      {
+        return {{"body", 0}};
+      }
     };
   } // namespace Geometry
 } // namespace FrictionalContact

@@ -31,9 +31,11 @@ namespace FrictionalContact
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
+    /// @p bodies names the bodies (material ids) for the messages.
     ElasticBody(const parallel::distributed::Triangulation<dim> &triangulation,
-                const LinearElasticMaterial<dim>                &material,
-                const BoundaryConditions<dim>                   &conditions);
+                const Materials<dim>                            &materials,
+                const BoundaryConditions<dim>                   &conditions,
+                const std::map<std::string, types::material_id> &bodies);
 
     /// Distributes the dofs, builds the constraints and the sparsity pattern.
     void
@@ -58,8 +60,9 @@ namespace FrictionalContact
     assemble();
 
     /**
-     * Throws an InputError unless the fixed boundaries hold the body against
-     * every rigid-body motion (translations and rotations).
+     * Throws an InputError unless the fixed boundaries hold each body
+     * against every rigid-body motion (translations and rotations): a body
+     * held by nothing but contact makes K singular.
      */
     void
     check_rigid_body_motion_is_prevented() const;
@@ -221,8 +224,9 @@ namespace FrictionalContact
     assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                   CellScratch &scratch) const;
 
-    const LinearElasticMaterial<dim> &material;
-    const BoundaryConditions<dim>    &conditions;
+    const Materials<dim>                     &materials;
+    const BoundaryConditions<dim>            &conditions;
+    std::map<std::string, types::material_id> bodies;
     MPI_Comm                          mpi_communicator;
 
     FESystem<dim>   fe;

@@ -2,8 +2,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/types.h>
 
+#include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace FrictionalContact
 {
@@ -24,8 +28,11 @@ namespace FrictionalContact
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads the subsection "Material".
-    explicit LinearElasticMaterial(ParameterHandler &prm);
+    /**
+     * Reads the subsection "Material" for the body @p body: an entry is one
+     * value for every body, or 'body: value; other body: value'.
+     */
+    LinearElasticMaterial(ParameterHandler &prm, const std::string &body);
 
     /// The fourth-order tensor C with sigma = C : epsilon (of the standard
     /// element).
@@ -85,5 +92,43 @@ namespace FrictionalContact
     SymmetricTensor<4, dim> stiffness;
     /// Whether the user forced the standard element.
     bool standard_forced;
+  };
+
+
+
+  /**
+   * The material of each body of the scene (bodies are the material ids of
+   * the mesh, named by the geometry), read from the subsection "Material".
+   * Owns one LinearElasticMaterial per body.
+   */
+  template <int dim>
+  class Materials
+  {
+  public:
+    /// Reads the subsection "Material" for the bodies @p bodies (name ->
+    /// material id).
+    Materials(ParameterHandler                                &prm,
+              const std::map<std::string, types::material_id> &bodies);
+
+    /// The material of the cells with material id @p id.
+    const LinearElasticMaterial<dim> &
+    of(const types::material_id id) const;
+
+    /// Whether some body uses the B-bar element.
+    bool
+    any_mean_dilatation() const;
+
+    /// "E = 1, nu = 0.3" for one body, "base: E = ...; block: ..." for more.
+    std::string
+    describe() const;
+
+    /// The locking warnings of the bodies, one line each.
+    std::vector<std::string>
+    locking_warnings() const;
+
+  private:
+    std::map<types::material_id, std::unique_ptr<LinearElasticMaterial<dim>>>
+                                                materials;
+    std::map<types::material_id, std::string> names;
   };
 } // namespace FrictionalContact

@@ -98,10 +98,17 @@ namespace FrictionalContact
       return *contact;
     }
 
-    const LinearElasticMaterial<dim> &
-    get_material() const
+    const Materials<dim> &
+    get_materials() const
     {
-      return *material;
+      return *materials;
+    }
+
+    /// The bodies of the scene: name -> material id of their cells.
+    const std::map<std::string, types::material_id> &
+    get_bodies() const
+    {
+      return bodies;
     }
 
   private:
@@ -116,7 +123,8 @@ namespace FrictionalContact
     std::unique_ptr<Geometry::Interface<dim>>    geometry;
     std::unique_ptr<MeshRefinement<dim>>         refinement;
     BoundaryNames                                boundary_names;
-    std::unique_ptr<LinearElasticMaterial<dim>>  material;
+    std::map<std::string, types::material_id>    bodies;
+    std::unique_ptr<Materials<dim>>              materials;
     std::unique_ptr<BoundaryConditions<dim>>     boundary_conditions;
     std::unique_ptr<ElasticBody<dim>>            body;
     std::unique_ptr<ContactOperator<dim>>        contact;

@@ -20,21 +20,22 @@ namespace FrictionalContact
    * assembled cell by cell beside K: A (K with the bulk modulus of
    * nu = 0.4), B (the cell integrals of div, one row per cell, numbered by
    * a piecewise-constant element) and the diagonals of C and of the
-   * approximate Schur complement. Made only when the material uses the
-   * B-bar element with a bulk modulus above that of nu = 0.4; owns the
-   * matrices, the cell numbering and the vectors.
+   * approximate Schur complement. Made only when a body's material uses the
+   * B-bar element with a bulk modulus above that of nu = 0.4 (the cells of
+   * the other bodies get a zero row of B and a pressure that stays zero);
+   * owns the matrices, the cell numbering and the vectors.
    */
   template <int dim>
   class VolumetricBlocks
   {
   public:
-    explicit VolumetricBlocks(const LinearElasticMaterial<dim> &material);
+    explicit VolumetricBlocks(const Materials<dim> &materials);
 
-    /// Whether the material makes a split at all.
+    /// Whether some body's material makes a split at all.
     bool
     active() const
     {
-      return penalty_modulus > 0;
+      return any_penalty;
     }
 
     /// Numbers the cells, makes the sparsity of A (that of K, given) and of B.
@@ -71,10 +72,8 @@ namespace FrictionalContact
     split() const;
 
   private:
-    /// kappa - kappa_0: the part of the bulk modulus the split takes out.
-    const double penalty_modulus;
-    /// 1 / kappa_p + 1 / M_0, per volume, of the approximate Schur complement.
-    const double schur_compliance;
+    const Materials<dim> &materials;
+    bool                  any_penalty = false;
 
     FE_DGQ<dim>                    cell_fe;
     DoFHandler<dim>                cell_numbering;

@@ -57,7 +57,7 @@ namespace FrictionalContact
                     const double                      time,
                     const ElasticBody<dim>           &body,
                     const ContactOperator<dim>       &contact,
-                    const LinearElasticMaterial<dim> &material,
+                    const Materials<dim>              &materials,
                     const Vector                     &u,
                     const ContactResults<dim>        &results);
 
@@ -65,7 +65,7 @@ namespace FrictionalContact
     write_csv_files(const unsigned int          increment,
                     const ElasticBody<dim>     &body,
                     const ContactOperator<dim> &contact,
-                    const LinearElasticMaterial<dim> &material,
+                    const Materials<dim>              &materials,
                     const Vector               &u,
                     const ContactResults<dim>  &results) const;
 

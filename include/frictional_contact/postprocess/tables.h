@@ -35,7 +35,7 @@ namespace FrictionalContact
     template <int dim>
     std::vector<std::string>
     cell_stress_rows(const ElasticBody<dim>              &body,
-                     const LinearElasticMaterial<dim>    &material,
+                     const Materials<dim>                &materials,
                      const TrilinosWrappers::MPI::Vector &u,
                      std::string                         &header);
   } // namespace Postprocess
