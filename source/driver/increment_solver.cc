@@ -32,10 +32,12 @@ namespace FrictionalContact
   {
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
-    linear_solver.initialize(body.stiffness_matrix(),
-                             body.rigid_body_modes(),
-                             0.,
-                             body.volumetric_split());
+    mortar.reset();
+    if (!contact.has_pairs())
+      linear_solver.initialize(body.stiffness_matrix(),
+                               body.rigid_body_modes(),
+                               0.,
+                               body.volumetric_split());
     mu_pi = 0;
     if (contact.active())
       sigma_T = contact.largest_singular_value();
@@ -65,7 +67,7 @@ namespace FrictionalContact
       return mu_pi;
     TimerOutput::Scope       scope(timer, "Smallest eigenvalue of K");
     const SmallestEigenvalue eigenvalue =
-      compute_smallest_eigenvalue(model.get_body().stiffness_matrix(),
+      compute_smallest_eigenvalue(stiffness(model),
                                   linear_solver,
                                   solver.eigenvalue_tolerance,
                                   solver.lanczos_vectors);
@@ -91,14 +93,13 @@ namespace FrictionalContact
   {
     const ContactOperator<dim> &contact = model.get_contact();
     auto problem = std::make_unique<IncrementalProblem<dim>>(
-      model.get_body().stiffness_matrix(), load, contact);
+      stiffness(model), load, contact);
     problem->largest_singular_value_T = sigma_T;
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
         // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l
         // (with the prescribed part of the increment).
-        problem->gaps.push_back(contact.reference_gap(j) -
-                                contact.local_part(j, start)[0]);
+        problem->gaps.push_back(contact.gap_at_start(j, start));
         Tensor<1, dim> slip = contact.to_local(j, obstacle_motion);
         slip[0]             = 0;
         problem->obstacle_slip.push_back(slip);
@@ -145,6 +146,20 @@ namespace FrictionalContact
     outcome.load = body.make_vector();
     body.internal_force(start, outcome.load);
     outcome.load.sadd(-1., load_factor, body.load_vector());
+    if (contact.has_pairs())
+      {
+        // The contact pairs were updated to this configuration: the basis
+        // in which their conditions are node-local, K_w and its AMG.
+        mortar = std::make_unique<MortarBasis<dim>>(body, contact);
+        linear_solver.release();
+        linear_solver.initialize(mortar->stiffness(),
+                                 mortar->modes_to_w(body.rigid_body_modes()),
+                                 0.,
+                                 mortar->volumetric_split());
+        mu_pi = 0;
+        TrilinosWrappers::MPI::Vector load = outcome.load;
+        mortar->force_to_w(load, outcome.load);
+      }
 
     outcome.du_solved       = body.make_vector();
     SolveStatistics &result = outcome.statistics;
@@ -186,6 +201,8 @@ namespace FrictionalContact
         result.converged  = true;
       }
     outcome.du = outcome.du_solved;
+    if (mortar)
+      mortar->displacement_to_u(outcome.du_solved, outcome.du);
     body.get_constraints().distribute(outcome.du);
     outcome.du += lifting;
     return outcome;
@@ -240,7 +257,7 @@ namespace FrictionalContact
         TrilinosWrappers::MPI::Vector K_du     = body.make_vector();
         TrilinosWrappers::MPI::Vector no_force = body.make_vector();
         TrilinosWrappers::MPI::Vector scratch  = body.make_vector();
-        body.stiffness_matrix().vmult(K_du, du);
+        stiffness(model).vmult(K_du, du);
         result.residuals =
           compute_residuals(problem, du, K_du, no_force, r, scratch);
         result.converged = true;

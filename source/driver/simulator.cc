@@ -217,6 +217,18 @@ namespace FrictionalContact
   {
     const double t           = driver.times()[l];
     const double load_factor = driver.loading().load_factor(t);
+    if (model.get_contact().has_pairs())
+      {
+        // The mortar data of the configuration the increment starts from:
+        // the state and the increment of the prescribed displacements.
+        const ElasticBody<dim>       &body  = model.get_body();
+        TrilinosWrappers::MPI::Vector start = body.make_vector();
+        body.prescribed_increment(driver.start_time(l), t, start);
+        start += state.u;
+        TrilinosWrappers::MPI::Vector start_ghosted = body.make_ghosted_vector();
+        start_ghosted = start;
+        model.get_contact().update_pairs(body, start_ghosted);
+      }
     IncrementOutcome<dim> outcome =
       increment_solver.solve(model,
                              state,

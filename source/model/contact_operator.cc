@@ -53,6 +53,15 @@ namespace FrictionalContact
                       "Boundaries (names or ids, separated by ';') whose "
                       "vertices may touch the obstacle. Empty: no contact, "
                       "a plain linear elastic solve.");
+    prm.declare_entry(
+      "Pairs",
+      "",
+      Patterns::Anything(),
+      "Contact between two bodies: 'slave boundary : master boundary' "
+      "items separated by ';', e.g. 'block bottom : base top'. The slave "
+      "side carries the contact forces (dual mortar: one friction cone per "
+      "slave node); make it the finer side. The friction coefficient is "
+      "<Friction coefficient>, as for the obstacle.");
     prm.declare_entry("Friction coefficient",
                       "0",
                       Patterns::Double(0.),
@@ -90,6 +99,21 @@ namespace FrictionalContact
          Input::split(prm.get("Contact boundaries"), ';'))
       contact_boundaries.insert(
         names.id("Contact/Contact boundaries", item));
+    for (const std::string &item : Input::split(prm.get("Pairs"), ';'))
+      {
+        const std::vector<std::string> sides = Input::split(item, ':');
+        if (sides.size() != 2)
+          Input::fail("Contact/Pairs", item,
+                      "'slave boundary : master boundary', e.g. "
+                      "'block bottom : base top'");
+        const types::boundary_id slave  = names.id("Contact/Pairs", sides[0]);
+        const types::boundary_id master = names.id("Contact/Pairs", sides[1]);
+        if (slave == master || contact_boundaries.count(slave) > 0)
+          Input::fail("Contact/Pairs", item,
+                      "two different boundaries, neither of them in "
+                      "<Contact/Contact boundaries>");
+        interfaces.emplace_back(slave, master);
+      }
     prm.enter_subsection("Obstacle");
     obstacle = PluginRegistry<Obstacle::Interface<dim>>::create(prm);
     rigid_displacement =
@@ -103,16 +127,14 @@ namespace FrictionalContact
 
 
   template <int dim>
-  void
-  ContactOperator<dim>::setup(const ElasticBody<dim> &body,
-                              const BoundaryNames    &names)
+  std::set<types::boundary_id>
+  ContactOperator<dim>::find_candidates(
+    const ElasticBody<dim>                   &body,
+    const std::set<types::boundary_id>       &boundaries,
+    const int                                 pair,
+    std::map<types::global_dof_index, Node> &found) const
   {
-    nodes.clear();
-    tangents.clear();
-
     const IndexSet &owned = body.locally_owned_dofs();
-    // Keyed by the first dof of the vertex: each vertex once, in dof order.
-    std::map<types::global_dof_index, Node> found;
     std::map<types::global_dof_index, double> area;
     std::set<types::boundary_id>            boundaries_with_candidates;
     const FiniteElement<dim> &fe = body.get_dof_handler().get_fe();
@@ -123,7 +145,7 @@ namespace FrictionalContact
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              contact_boundaries.count(cell->face(f)->boundary_id()) > 0)
+              boundaries.count(cell->face(f)->boundary_id()) > 0)
             {
               // Lumped areas: the integral of each vertex's shape function
               // (component 0 of the vector-valued Q1 element) over the face.
@@ -154,8 +176,7 @@ namespace FrictionalContact
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              contact_boundaries.count(face->boundary_id()) > 0)
+          if (face->at_boundary() && boundaries.count(face->boundary_id()) > 0)
             for (const unsigned int v : face->vertex_indices())
               {
                 Node node;
@@ -175,13 +196,45 @@ namespace FrictionalContact
                 boundaries_with_candidates.insert(face->boundary_id());
                 node.position = face->vertex(v);
                 node.area     = area[first_dof];
-                found.emplace(first_dof, node);
+                node.pair     = pair;
+                const auto [it, inserted] = found.emplace(first_dof, node);
+                if (!inserted && it->second.pair != pair)
+                  throw InputError(
+                    "<Contact/Pairs>: a vertex at " + Input::to_text(node.position[0]) +
+                    ", " + Input::to_text(node.position[1]) +
+                    (dim == 3 ? ", " + Input::to_text(node.position[dim - 1]) : "") +
+                    " is on two contact boundaries; a slave boundary must not "
+                    "touch another contact boundary");
               }
+    return Utilities::MPI::compute_set_union(boundaries_with_candidates,
+                                             body.get_mpi_communicator());
+  }
 
-    const std::set<types::boundary_id> with_candidates =
-      Utilities::MPI::compute_set_union(boundaries_with_candidates,
-                                        body.get_mpi_communicator());
-    for (const types::boundary_id id : contact_boundaries)
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::setup(const ElasticBody<dim> &body,
+                              const BoundaryNames    &names)
+  {
+    nodes.clear();
+    tangents.clear();
+    mpi_communicator = body.get_mpi_communicator();
+
+    // Keyed by the first dof of the vertex: each vertex once, in dof order.
+    std::map<types::global_dof_index, Node> found;
+    std::set<types::boundary_id> with_candidates =
+      find_candidates(body, contact_boundaries, -1, found);
+    for (unsigned int k = 0; k < interfaces.size(); ++k)
+      {
+        interfaces[k].setup(body);
+        const std::set<types::boundary_id> slave = {interfaces[k].slave_boundary()};
+        with_candidates.merge(find_candidates(body, slave, k, found));
+      }
+    std::set<types::boundary_id> boundaries = contact_boundaries;
+    for (const MortarInterface<dim> &interface : interfaces)
+      boundaries.insert(interface.slave_boundary());
+    for (const types::boundary_id id : boundaries)
       if (with_candidates.count(id) == 0)
         throw InputError("<Contact/Contact boundaries> = '" + names.name(id) +
                          "': this boundary has no contact candidate node "
@@ -196,24 +249,60 @@ namespace FrictionalContact
       tangents.resize(nodes.size());
     n_global = Utilities::MPI::sum<types::global_dof_index>(
       nodes.size(), body.get_mpi_communicator());
-    mpi_communicator = body.get_mpi_communicator();
     move_obstacle(obstacle_displacement(0.));
+    check_initial_gaps(body);
+  }
 
-    // The obstacle must not start inside the body.
-    double smallest_gap = 0;
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::check_initial_gaps(const ElasticBody<dim> &body)
+  {
+    if (has_pairs())
+      {
+        Vector zero = body.make_ghosted_vector();
+        update_pairs(body, zero);
+      }
+    // Neither the obstacle nor another body may start inside a body.
+    double  smallest_gap[2] = {0, 0};
+    Point<dim> deepest[2];
     for (unsigned int j = 0; j < nodes.size(); ++j)
-      smallest_gap = std::min(smallest_gap, reference_gap(j));
+      {
+        const unsigned int kind = nodes[j].pair < 0 ? 0 : 1;
+        const double gap = kind == 0 ? reference_gap(j) : nodes[j].gap;
+        if (gap < smallest_gap[kind])
+          {
+            smallest_gap[kind] = gap;
+            deepest[kind]      = nodes[j].position;
+          }
+      }
     double extent = 0;
     for (const Node &node : nodes)
       for (unsigned int d = 0; d < dim; ++d)
         extent = std::max(extent, std::abs(node.position[d]));
     extent = Utilities::MPI::max(extent, mpi_communicator);
-    const double overlap = -Utilities::MPI::min(smallest_gap, mpi_communicator);
+    const double overlap = -Utilities::MPI::min(smallest_gap[0], mpi_communicator);
     if (overlap > 1e-12 * extent)
       throw InputError("<Contact/Obstacle>: the obstacle starts inside the "
                          "body, " + Input::to_text(overlap) +
                          " deep (a negative gap); move it so that every gap "
                          "is >= 0 at t = 0, for a plane its Point");
+    const auto where =
+      Utilities::MPI::min_max_avg(smallest_gap[1], mpi_communicator);
+    if (-where.min > 1e-10 * extent)
+      {
+        const Point<dim> point = Utilities::MPI::broadcast(
+          mpi_communicator, deepest[1], where.min_index);
+        std::string at;
+        for (unsigned int d = 0; d < dim; ++d)
+          at += (d == 0 ? "" : ", ") + Input::to_text(point[d]);
+        throw InputError("<Contact/Pairs>: the bodies overlap at the start: "
+                         "the slave vertex at (" + at + ") is " +
+                         Input::to_text(-where.min) +
+                         " inside the other body; move them apart (for "
+                         "stacked blocks, <Geometry/Stacked blocks/Block offset>)");
+      }
   }
 
 
@@ -236,6 +325,7 @@ namespace FrictionalContact
   {
     obstacle_shift = displacement;
     for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].pair < 0)
       {
         const Tensor<1, dim> normal =
           obstacle->outward_normal(nodes[j].position - displacement);
@@ -243,6 +333,28 @@ namespace FrictionalContact
         if (!tangents.empty())
           tangents[j] = tangents_to<dim>(normal);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::update_pairs(const ElasticBody<dim> &body,
+                                     const Vector           &u_ghosted)
+  {
+    for (MortarInterface<dim> &interface : interfaces)
+      interface.update(body, u_ghosted);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].pair >= 0)
+        {
+          const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]);
+          Assert(data != nullptr, ExcInternalError());
+          nodes[j].into_obstacle = data->normal;
+          nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
+          nodes[j].gap  = data->gap;
+          if (!tangents.empty())
+            tangents[j] = tangents_to<dim>(data->normal);
+        }
   }
 
 
@@ -446,6 +558,9 @@ namespace FrictionalContact
     std::string text;
     for (const types::boundary_id id : contact_boundaries)
       text += (text.empty() ? "" : ", ") + names.name(id);
+    for (const MortarInterface<dim> &interface : interfaces)
+      text += (text.empty() ? "" : ", ") + names.name(interface.slave_boundary()) +
+              " : " + names.name(interface.master_boundary());
     return text;
   }
 

@@ -22,6 +22,8 @@ namespace FrictionalContact
           s.stick_area += contact.nodal_area(j);
         s.max_pressure = std::max(s.max_pressure, results.pressure[j]);
         s.force += contact_forces[j];
+        if (!contact.is_pair_node(j))
+          s.external_force += contact_forces[j];
         s.normal_force -= results.reaction[j][0];
         Tensor<1, dim> normal_part;
         normal_part[0] = results.reaction[j][0];
@@ -32,6 +34,7 @@ namespace FrictionalContact
     Utilities::MPI::sum(counts, comm, counts);
     s.counts = {{counts[0], counts[1], counts[2]}};
     s.force            = Utilities::MPI::sum(s.force, comm);
+    s.external_force   = Utilities::MPI::sum(s.external_force, comm);
     s.normal_force     = Utilities::MPI::sum(s.normal_force, comm);
     s.tangential_force = Utilities::MPI::sum(tangential_force, comm).norm();
     s.contact_area     = Utilities::MPI::sum(s.contact_area, comm);

@@ -125,9 +125,9 @@ namespace FrictionalContact
             << " slip (" << free << " / " << stick << " / " << slip << " of "
             << c << ")" << std::endl;
       out << "    force balance: load " << vector_text(load) << " + contact "
-          << vector_text(summary.force) << " + supports "
+          << vector_text(summary.external_force) << " + supports "
           << vector_text(support) << " = "
-          << Input::scientific((load + summary.force + support).norm())
+          << Input::scientific((load + summary.external_force + support).norm())
           << std::endl
           << "    max |u| = "
           << Input::to_text(body.largest_nodal_magnitude(result.state.u))

@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <frictional_contact/model/model.h>
+#include <frictional_contact/model/mortar_basis.h>
 #include <frictional_contact/model/contact_results.h>
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/contact_solver_parameters.h>
@@ -61,7 +62,8 @@ namespace FrictionalContact
                     const ConditionalOStream &pcout);
 
     /// Builds the AMG of K and, with contact, sigma_T (again after the
-    /// mesh changed; mu_pi is then computed anew when needed).
+    /// mesh changed; mu_pi is then computed anew when needed). With
+    /// contact pairs the AMG is built at each increment, on its K_w.
     void
     initialize(const Model<dim> &model);
 
@@ -98,6 +100,14 @@ namespace FrictionalContact
     iteration_name() const
     {
       return solver.method->iteration_name();
+    }
+
+    /// The stiffness the solvers see: K, or with contact pairs K_w = Q^T K Q
+    /// of the increment's mortar basis.
+    const TrilinosWrappers::SparseMatrix &
+    stiffness(const Model<dim> &model) const
+    {
+      return mortar ? mortar->stiffness() : model.get_body().stiffness_matrix();
     }
 
     /// The solver of the linear systems with K, and its time counters.
@@ -152,6 +162,8 @@ namespace FrictionalContact
     const ConditionalOStream    &pcout;
     ShiftedStiffnessSolver       linear_solver;
     ContactSolverParameters<dim> solver;
+    /// The basis u = Q w of the increment's contact pairs (none without).
+    std::unique_ptr<MortarBasis<dim>> mortar;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

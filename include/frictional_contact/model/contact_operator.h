@@ -6,12 +6,14 @@
 
 #include <frictional_contact/solvers/contact_map.h>
 #include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/model/mortar_interface.h>
 #include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/driver/loading_history.h>
 #include <frictional_contact/obstacle/interface.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -45,11 +47,58 @@ namespace FrictionalContact
     /// Reads the subsection "Contact" and creates the obstacle.
     ContactOperator(ParameterHandler &prm, const BoundaryNames &names);
 
-    /// Whether the scene has a contact boundary at all.
+    /// Whether the scene has a contact boundary or pair at all.
     bool
     active() const
     {
-      return !contact_boundaries.empty();
+      return !contact_boundaries.empty() || !interfaces.empty();
+    }
+
+    /// Whether the scene has contact pairs of two bodies (mortar).
+    bool
+    has_pairs() const
+    {
+      return !interfaces.empty();
+    }
+
+    /**
+     * Rebuilds the mortar data of every pair in the configuration X + u
+     * (@p u_ghosted with ghost entries): the slave nodes' frames, areas and
+     * gaps, and the rows P_jl. Call at the start of every increment, with
+     * the displacement the increment starts from. Collective.
+     */
+    void
+    update_pairs(const ElasticBody<dim> &body, const Vector &u_ghosted);
+
+    /**
+     * The gap of candidate j at the start of an increment whose
+     * displacement so far is @p start: from the obstacle's reference gap,
+     * or for a pair's slave node the mortar gap of update_pairs().
+     */
+    double
+    gap_at_start(const unsigned int j, const Vector &start) const
+    {
+      return nodes[j].pair < 0 ? reference_gap(j) - local_part(j, start)[0] :
+                                 nodes[j].gap;
+    }
+
+    /**
+     * Calls @p f(slave dof, master dof, P_jl) for every free displacement
+     * component of every pair's slave node on this rank and every master
+     * node of its mortar row: u_S = w_S + sum_l P_jl u_l is the basis of
+     * MortarBasis.
+     */
+    template <typename Function>
+    void
+    for_each_mortar_coupling(const Function &f) const
+    {
+      for (const Node &node : nodes)
+        if (node.pair >= 0)
+          if (const auto *data = interfaces[node.pair].node(node.dofs[0]))
+            for (const auto &[master, p] : data->masters)
+              for (unsigned int c = 0; c < dim; ++c)
+                if (node.free[c])
+                  f(node.dofs[c], master[c], p);
     }
 
     /**
@@ -179,6 +228,14 @@ namespace FrictionalContact
     double
     orthonormality_defect() const;
 
+    /// Whether candidate j is a pair's slave node (not facing the obstacle):
+    /// its force acts between two bodies and adds nothing to the whole.
+    bool
+    is_pair_node(const unsigned int j) const
+    {
+      return nodes[j].pair >= 0;
+    }
+
     /// Global index of the x-displacement dof of candidate j.
     types::global_dof_index
     first_dof(const unsigned int j) const
@@ -248,12 +305,33 @@ namespace FrictionalContact
       std::array<bool, dim> free;
       /// t_n,j: unit vector pointing into the obstacle.
       Tensor<1, dim> into_obstacle;
-      /// Lumped area on the contact boundaries (see nodal_area()).
+      /// Lumped area on the contact boundaries (see nodal_area()); for a
+      /// pair's slave node its mortar weight D_jj.
       double area = 0;
+      /// The pair whose slave node this is (-1: a candidate facing the
+      /// obstacle), and then its gap at the start of the increment.
+      int    pair = -1;
+      double gap  = 0;
     };
+
+    /// The candidates on @p boundaries into @p found (their pair @p pair,
+    /// -1 for the obstacle's); returns the boundaries that have candidates
+    /// on any rank. Collective.
+    std::set<types::boundary_id>
+    find_candidates(const ElasticBody<dim>                  &body,
+                    const std::set<types::boundary_id>      &boundaries,
+                    const int                                pair,
+                    std::map<types::global_dof_index, Node> &found) const;
+
+    /// Throws an InputError if the obstacle or another body starts inside
+    /// a body. Collective.
+    void
+    check_initial_gaps(const ElasticBody<dim> &body);
 
     FrictionCone<dim>                            cone;
     std::set<types::boundary_id>                 contact_boundaries;
+    /// The pairs of two bodies (<Contact/Pairs>).
+    std::vector<MortarInterface<dim>>            interfaces;
     std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
     std::vector<Node>                            nodes;
     /// T_t,j; empty without friction (the tangential operator is not needed).

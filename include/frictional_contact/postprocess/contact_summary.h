@@ -15,9 +15,13 @@ namespace FrictionalContact
   {
     /// Candidates free, sticking and slipping (in ContactState's order).
     std::array<unsigned int, 3> counts = {{0, 0, 0}};
-    /// The total contact force (Cartesian), its normal part (>= 0 when
-    /// pressing) and the magnitude of its tangential part.
+    /// The total contact force (Cartesian; of a pair, the force on its slave
+    /// side), its normal part (>= 0 when pressing) and the magnitude of its
+    /// tangential part.
     Tensor<1, dim> force;
+    /// The part of the force the obstacle exerts: what the bodies as a
+    /// whole feel (a pair's forces cancel).
+    Tensor<1, dim> external_force;
     double         normal_force     = 0;
     double         tangential_force = 0;
     /// Lumped areas of the candidates in contact and of those sticking.

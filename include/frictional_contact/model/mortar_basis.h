@@ -1,0 +1,78 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/model/contact_operator.h>
+#include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/solvers/volumetric_split.h>
+
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * The change of basis u = Q w of Hueber and Wohlmuth that makes the
+   * mortar contact conditions of two bodies node-local: Q = I + E, where E
+   * holds P_jl in the rows of the slave dofs and the columns of the master
+   * dofs, so that u_S = w_S + sum_l P_jl u_l and u = w elsewhere. In w, a
+   * slave node's relative displacement n_j . (u_j - sum_l P_jl u_l) is its
+   * own n_j . w_j, and the contact map of a rigid obstacle (one orthonormal
+   * frame per node) serves both solvers unchanged, on K_w = Q^T K Q and
+   * p_w = Q^T p. Master dofs held by hanging nodes are replaced by the dofs
+   * they hang from; fixed and prescribed ones drop out (their increment is
+   * in the lifting). Built anew at each increment, from the contact
+   * operator's mortar rows. Owns Q and the transformed matrices.
+   */
+  template <int dim>
+  class MortarBasis
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /// Q from the mortar rows of @p contact (after update_pairs()).
+    MortarBasis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
+
+    /// K_w = Q^T K Q of the body's stiffness matrix.
+    const TrilinosWrappers::SparseMatrix &
+    stiffness() const
+    {
+      return transformed_stiffness;
+    }
+
+    /// The body's volumetric split in w (A_w = Q^T A Q, B_w = B Q), empty
+    /// if the body has none.
+    const VolumetricSplit &
+    volumetric_split() const
+    {
+      return split;
+    }
+
+    /// p_w = Q^T p: a force in w (the work f . du is f_w . dw).
+    void
+    force_to_w(const Vector &force, Vector &force_w) const;
+
+    /// f = Q^-T f_w = f_w - E^T f_w: the forces in u of forces in w.
+    void
+    force_to_u(const Vector &force_w, Vector &force) const;
+
+    /// u = Q w.
+    void
+    displacement_to_u(const Vector &w, Vector &u) const;
+
+    /// w = Q^-1 u = u - E u (E E = 0: no master dof is a slave dof).
+    void
+    displacement_to_w(const Vector &u, Vector &w) const;
+
+    /// The rigid-body modes (locally owned vectors) in w, for the AMG.
+    std::vector<std::vector<double>>
+    modes_to_w(const std::vector<std::vector<double>> &modes) const;
+
+  private:
+    TrilinosWrappers::SparseMatrix basis;
+    TrilinosWrappers::SparseMatrix transformed_stiffness;
+    TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
+    TrilinosWrappers::SparseMatrix transformed_divergence;
+    VolumetricSplit                split;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/model/mortar_segments.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace FrictionalContact
+{
+  /**
+   * One contact pair of two deformable bodies: a slave boundary, which
+   * carries the Lagrange multipliers (dual basis, so one multiplier and one
+   * friction cone per slave node), and a master boundary. Owns the faces of
+   * both sides and, after update(), the mortar data of each locally owned
+   * slave vertex in the current configuration: the averaged outward normal,
+   * the weight D_jj, the row P_jl = M_jl / D_jj that maps master
+   * displacements to the slave node, and the nodal gap
+   * sum_l P_jl n_j . (y_l - x_j). Small sliding: the data is frozen within
+   * an increment. Master faces may live on any rank: their current
+   * vertices are gathered on every rank at each update.
+   */
+  template <int dim>
+  class MortarInterface
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+    using NodeDofs = std::array<types::global_dof_index, dim>;
+
+    MortarInterface(const types::boundary_id slave,
+                    const types::boundary_id master);
+
+    /// Collects the faces of both boundaries on the current mesh.
+    void
+    setup(const ElasticBody<dim> &body);
+
+    /**
+     * Computes the mortar data of the locally owned slave vertices in the
+     * configuration X + u, @p u_ghosted with ghost entries. Collective.
+     */
+    void
+    update(const ElasticBody<dim> &body, const Vector &u_ghosted);
+
+    /// The mortar data of a slave vertex.
+    struct SlaveNode
+    {
+      /// The averaged outward unit normal of the slave surface.
+      Tensor<1, dim> normal;
+      /// D_jj: the integral of the node's dual function over the part of
+      /// the slave surface the master covers (0 if none).
+      double weight = 0;
+      /// The integral of the node's Q1 function over the slave faces.
+      double full_weight = 0;
+      /// The nodal gap to the master (length), if the node has a master.
+      double gap = 0;
+      /// The master vertices and P_jl.
+      std::vector<std::pair<NodeDofs, double>> masters;
+    };
+
+    /// The data of the locally owned slave vertex whose x dof is @p dof,
+    /// or nullptr if it is not one.
+    const SlaveNode *
+    node(const types::global_dof_index dof) const;
+
+    /// The slave vertices of this rank (keyed by their x dof).
+    const std::map<types::global_dof_index, SlaveNode> &
+    slave_nodes() const
+    {
+      return nodes;
+    }
+
+    types::boundary_id
+    slave_boundary() const
+    {
+      return slave_id;
+    }
+
+    types::boundary_id
+    master_boundary() const
+    {
+      return master_id;
+    }
+
+    /// The gap of a slave node that no master face covers: how far the
+    /// search looked (a node further than this from the master is free).
+    double
+    search_distance() const
+    {
+      return reach;
+    }
+
+  private:
+    static constexpr unsigned int n_face_vertices =
+      GeometryInfo<dim - 1>::vertices_per_cell;
+
+    /// A face: its vertices' dofs and reference positions, and which side
+    /// of it is outside (the sign of its parametric normal, fixed on the
+    /// reference configuration).
+    struct Face
+    {
+      std::array<NodeDofs, n_face_vertices>   dofs;
+      std::array<Point<dim>, n_face_vertices> reference;
+      double                                  orientation = 1;
+    };
+
+    /// The faces with @p id of the cells @p include picks.
+    template <typename Include>
+    std::vector<Face>
+    collect_faces(const ElasticBody<dim> &body,
+                  const types::boundary_id id,
+                  const Include           &include) const;
+
+    /// The current vertices of @p face for the displacement @p u_ghosted.
+    MortarSegments::FaceVertices<dim>
+    current_vertices(const Face &face, const Vector &u_ghosted) const;
+
+    /// The outward unit normal of a face with vertices @p x at its centre.
+    static Tensor<1, dim>
+    outward_normal(const MortarSegments::FaceVertices<dim> &x,
+                   const double                             orientation);
+
+    /// Every master face of every rank, in the current configuration.
+    std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>>
+    gather_master_faces(const Vector &u_ghosted, const MPI_Comm comm);
+
+    types::boundary_id slave_id, master_id;
+    std::vector<Face>  slave_faces;
+    /// The master faces of this rank's cells, and of all ranks (the dofs
+    /// and orientations are gathered at setup, the positions at update).
+    std::vector<Face>  local_master_faces;
+    std::vector<Face>  all_master_faces;
+    std::map<types::global_dof_index, SlaveNode> nodes;
+    double reach = 0;
+  };
+} // namespace FrictionalContact

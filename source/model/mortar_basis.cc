@@ -1,0 +1,120 @@
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <frictional_contact/model/mortar_basis.h>
+
+#include <map>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  MortarBasis<dim>::MortarBasis(const ElasticBody<dim>     &body,
+                                const ContactOperator<dim> &contact)
+  {
+    const IndexSet                  &owned       = body.locally_owned_dofs();
+    const AffineConstraints<double> &constraints = body.get_constraints();
+    const MPI_Comm                   comm        = body.get_mpi_communicator();
+
+    // E: P_jl into the columns of the master dofs, or of the dofs a
+    // hanging master dof hangs from; a fixed one has no entries.
+    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> E;
+    contact.for_each_mortar_coupling([&](const types::global_dof_index slave,
+                                         const types::global_dof_index master,
+                                         const double                  p) {
+      if (!constraints.is_constrained(master))
+        E[{slave, master}] += p;
+      else
+        for (const auto &[parent, weight] : *constraints.get_constraint_entries(master))
+          E[{slave, parent}] += p * weight;
+    });
+
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
+    for (const auto i : owned)
+      pattern.add(i, i);
+    for (const auto &[entry, value] : E)
+      pattern.add(entry.first, entry.second);
+    pattern.compress();
+    basis.reinit(pattern);
+    for (const auto i : owned)
+      basis.set(i, i, 1.);
+    for (const auto &[entry, value] : E)
+      basis.set(entry.first, entry.second, value);
+    basis.compress(VectorOperation::insert);
+
+    TrilinosWrappers::SparseMatrix product;
+    body.stiffness_matrix().mmult(product, basis);
+    basis.Tmmult(transformed_stiffness, product);
+
+    const VolumetricSplit volumetric = body.volumetric_split();
+    if (volumetric.reduced_stiffness != nullptr)
+      {
+        volumetric.reduced_stiffness->mmult(product, basis);
+        basis.Tmmult(transformed_reduced_stiffness, product);
+        volumetric.divergence->mmult(transformed_divergence, basis);
+        split                    = volumetric;
+        split.reduced_stiffness  = &transformed_reduced_stiffness;
+        split.divergence         = &transformed_divergence;
+        split.stiffness_bound    = transformed_stiffness.linfty_norm();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::force_to_w(const Vector &force, Vector &force_w) const
+  {
+    basis.Tvmult(force_w, force);
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::force_to_u(const Vector &force_w, Vector &force) const
+  {
+    // (I - E^T) f_w = 2 f_w - Q^T f_w.
+    basis.Tvmult(force, force_w);
+    force.sadd(-1., 2., force_w);
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::displacement_to_u(const Vector &w, Vector &u) const
+  {
+    basis.vmult(u, w);
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::displacement_to_w(const Vector &u, Vector &w) const
+  {
+    // (I - E) u = 2 u - Q u.
+    basis.vmult(w, u);
+    w.sadd(-1., 2., u);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  MortarBasis<dim>::modes_to_w(const std::vector<std::vector<double>> &modes) const
+  {
+    const IndexSet &owned = basis.locally_owned_domain_indices();
+    std::vector<std::vector<double>> transformed;
+    Vector u(owned, basis.get_mpi_communicator()), w(u);
+    for (const std::vector<double> &mode : modes)
+      {
+        std::copy(mode.begin(), mode.end(), u.begin());
+        displacement_to_w(u, w);
+        transformed.emplace_back(w.begin(), w.end());
+      }
+    return transformed;
+  }
+
+  template class MortarBasis<2>;
+  template class MortarBasis<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,297 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <frictional_contact/model/mortar_interface.h>
+
+#include <boost/geometry/index/rtree.hpp>
+
+#include <algorithm>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// The integral of each vertex's Q1 function over the face @p x.
+    template <int dim>
+    std::array<double, GeometryInfo<dim - 1>::vertices_per_cell>
+    lumped_weights(const MortarSegments::FaceVertices<dim> &x)
+    {
+      std::array<double, GeometryInfo<dim - 1>::vertices_per_cell> weights{};
+      if constexpr (dim == 2)
+        weights[0] = weights[1] = x[0].distance(x[1]) / 2;
+      else
+        {
+          const QGauss<2> gauss(2);
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const double s = gauss.point(q)[0], t = gauss.point(q)[1];
+              const Tensor<1, 3> xs = (1 - t) * (x[1] - x[0]) + t * (x[3] - x[2]);
+              const Tensor<1, 3> xt = (1 - s) * (x[2] - x[0]) + s * (x[3] - x[1]);
+              const auto N = MortarSegments::shape_values<3>(gauss.point(q));
+              const double dx = gauss.weight(q) * cross_product_3d(xs, xt).norm();
+              for (unsigned int a = 0; a < 4; ++a)
+                weights[a] += N[a] * dx;
+            }
+        }
+      return weights;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  MortarInterface<dim>::MortarInterface(const types::boundary_id slave,
+                                        const types::boundary_id master)
+    : slave_id(slave)
+    , master_id(master)
+  {}
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  MortarInterface<dim>::outward_normal(const MortarSegments::FaceVertices<dim> &x,
+                                       const double orientation)
+  {
+    Tensor<1, dim> n;
+    if constexpr (dim == 2)
+      {
+        n[0] = x[1][1] - x[0][1];
+        n[1] = x[0][0] - x[1][0];
+      }
+    else
+      n = cross_product_3d(0.5 * (x[1] - x[0] + x[3] - x[2]),
+                           0.5 * (x[2] - x[0] + x[3] - x[1]));
+    return orientation * n / n.norm();
+  }
+
+
+
+  template <int dim>
+  template <typename Include>
+  std::vector<typename MortarInterface<dim>::Face>
+  MortarInterface<dim>::collect_faces(const ElasticBody<dim>   &body,
+                                      const types::boundary_id id,
+                                      const Include           &include) const
+  {
+    std::vector<Face> faces;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial() && include(cell))
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == id)
+            {
+              Face                              f;
+              MortarSegments::FaceVertices<dim> x;
+              for (unsigned int v = 0; v < n_face_vertices; ++v)
+                {
+                  for (unsigned int c = 0; c < dim; ++c)
+                    f.dofs[v][c] = face->vertex_dof_index(v, c);
+                  f.reference[v] = x[v] = face->vertex(v);
+                }
+              // Outside is away from the cell's centre.
+              f.orientation =
+                outward_normal(x, 1.) * (face->center() - cell->center()) > 0 ? 1. : -1.;
+              faces.push_back(f);
+            }
+    return faces;
+  }
+
+
+
+  template <int dim>
+  void
+  MortarInterface<dim>::setup(const ElasticBody<dim> &body)
+  {
+    const IndexSet &owned = body.locally_owned_dofs();
+    const MPI_Comm  comm  = body.get_mpi_communicator();
+    // The slave faces that touch a vertex of this rank: with the ghost
+    // layer, every face around an owned vertex is there.
+    slave_faces = collect_faces(body, slave_id, [&](const auto &cell) {
+      for (const unsigned int v : cell->vertex_indices())
+        if (owned.is_element(cell->vertex_dof_index(v, 0)))
+          return true;
+      return false;
+    });
+    local_master_faces =
+      collect_faces(body, master_id, [](const auto &cell) { return cell->is_locally_owned(); });
+
+    // Every rank gets every master face's dofs and orientation.
+    std::vector<double> packed;
+    for (const Face &face : local_master_faces)
+      {
+        for (const NodeDofs &dofs : face.dofs)
+          for (const auto dof : dofs)
+            packed.push_back(static_cast<double>(dof));
+        packed.push_back(face.orientation);
+      }
+    all_master_faces.clear();
+    const unsigned int stride = n_face_vertices * dim + 1;
+    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, packed))
+      for (std::size_t k = 0; k + stride <= part.size(); k += stride)
+        {
+          Face face;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              face.dofs[v][c] =
+                static_cast<types::global_dof_index>(part[k + v * dim + c]);
+          face.orientation = part[k + stride - 1];
+          all_master_faces.push_back(face);
+        }
+
+    nodes.clear();
+    double largest = 0;
+    for (const Face &face : slave_faces)
+      {
+        for (unsigned int v = 0; v < n_face_vertices; ++v)
+          if (owned.is_element(face.dofs[v][0]))
+            nodes[face.dofs[v][0]];
+        for (unsigned int v = 0; v < n_face_vertices; ++v)
+          for (unsigned int w = 0; w < v; ++w)
+            largest = std::max(largest, face.reference[v].distance(face.reference[w]));
+      }
+    reach = 2 * Utilities::MPI::max(largest, comm);
+  }
+
+
+
+  template <int dim>
+  MortarSegments::FaceVertices<dim>
+  MortarInterface<dim>::current_vertices(const Face   &face,
+                                         const Vector &u_ghosted) const
+  {
+    MortarSegments::FaceVertices<dim> x;
+    for (unsigned int v = 0; v < n_face_vertices; ++v)
+      {
+        x[v] = face.reference[v];
+        for (unsigned int c = 0; c < dim; ++c)
+          x[v][c] += u_ghosted[face.dofs[v][c]];
+      }
+    return x;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<MortarSegments::FaceVertices<dim>,
+                        const typename MortarInterface<dim>::Face *>>
+  MortarInterface<dim>::gather_master_faces(const Vector  &u_ghosted,
+                                            const MPI_Comm comm)
+  {
+    std::vector<double> packed;
+    for (const Face &face : local_master_faces)
+      for (const Point<dim> &x : current_vertices(face, u_ghosted))
+        for (unsigned int c = 0; c < dim; ++c)
+          packed.push_back(x[c]);
+    std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>> faces;
+    const unsigned int stride = n_face_vertices * dim;
+    unsigned int       index  = 0;
+    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, packed))
+      for (std::size_t k = 0; k + stride <= part.size(); k += stride, ++index)
+        {
+          MortarSegments::FaceVertices<dim> x;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              x[v][c] = part[k + v * dim + c];
+          faces.emplace_back(x, &all_master_faces[index]);
+        }
+    return faces;
+  }
+
+
+
+  template <int dim>
+  void
+  MortarInterface<dim>::update(const ElasticBody<dim> &body,
+                               const Vector           &u_ghosted)
+  {
+    const IndexSet &owned = body.locally_owned_dofs();
+    const auto masters = gather_master_faces(u_ghosted, body.get_mpi_communicator());
+
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+    for (unsigned int m = 0; m < masters.size(); ++m)
+      {
+        const auto &x = masters[m].first;
+        boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(x.begin(), x.end())),
+                           m);
+      }
+    const auto tree = pack_rtree(boxes);
+
+    // Per owned slave vertex: the sums of the face normals, the lumped
+    // weights, and the rows of M with the masters' current positions.
+    std::map<types::global_dof_index, std::map<NodeDofs, double>> rows;
+    std::map<NodeDofs, Point<dim>>                              master_position;
+    std::map<types::global_dof_index, Point<dim>>               slave_position;
+    for (auto &[dof, node] : nodes)
+      node = SlaveNode();
+    for (const Face &face : slave_faces)
+      {
+        const MortarSegments::FaceVertices<dim> x = current_vertices(face, u_ghosted);
+        const Tensor<1, dim> normal  = outward_normal(x, face.orientation);
+        const auto           lumped  = lumped_weights<dim>(x);
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          if (owned.is_element(face.dofs[a][0]))
+            {
+              SlaveNode &node = nodes[face.dofs[a][0]];
+              node.normal += normal;
+              node.full_weight += lumped[a];
+              slave_position[face.dofs[a][0]] = x[a];
+            }
+
+        BoundingBox<dim> search(std::vector<Point<dim>>(x.begin(), x.end()));
+        search.extend(reach);
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> near;
+        tree.query(boost::geometry::index::intersects(search), std::back_inserter(near));
+        for (const auto &[box, m] : near)
+          {
+            const auto &[y, master] = masters[m];
+            if (outward_normal(y, master->orientation) * normal >= 0)
+              continue; // not facing the slave
+            const Table<2, double> M = MortarSegments::face_integrals<dim>(x, normal, y);
+            for (unsigned int a = 0; a < n_face_vertices; ++a)
+              if (owned.is_element(face.dofs[a][0]))
+                for (unsigned int b = 0; b < n_face_vertices; ++b)
+                  if (M(a, b) != 0)
+                    {
+                      rows[face.dofs[a][0]][master->dofs[b]] += M(a, b);
+                      master_position[master->dofs[b]] = y[b];
+                    }
+          }
+      }
+
+    for (auto &[dof, node] : nodes)
+      {
+        node.normal /= node.normal.norm();
+        for (const auto &[master, m] : rows[dof])
+          node.weight += m;
+        // A node the master hardly covers gets no mortar row: it is free
+        // this increment (a weight near 0 would make P_jl = M_jl / D_jj huge).
+        if (!(node.weight > 1e-3 * node.full_weight))
+          {
+            node.weight = 0;
+            node.gap    = reach;
+            continue;
+          }
+        for (const auto &[master, m] : rows[dof])
+          {
+            const double p = m / node.weight;
+            node.masters.emplace_back(master, p);
+            node.gap += p * (node.normal * (master_position[master] - slave_position[dof]));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  const typename MortarInterface<dim>::SlaveNode *
+  MortarInterface<dim>::node(const types::global_dof_index dof) const
+  {
+    const auto it = nodes.find(dof);
+    return it == nodes.end() ? nullptr : &it->second;
+  }
+
+  template class MortarInterface<2>;
+  template class MortarInterface<3>;
+} // namespace FrictionalContact
