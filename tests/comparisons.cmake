@@ -328,3 +328,30 @@ foreach(_test lame_2d lame_3d.mpirun=2 lame_3d.mpirun=3 lame_3d_standard)
   set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
 endforeach()
 set_tests_properties(lame_3d_standard.analytic PROPERTIES WILL_FAIL TRUE)
+
+# The contact patch test of two bodies (dual mortar): the exact linear
+# displacement and the uniform contact pressure, frictionless and with
+# friction, slave and master either way round, 2D and 3D, on 1 to 3 ranks.
+foreach(_case
+    "patch_test_two_bodies_2d:1e-10:ux=0.39*0.01/(0.91*2)*x:uy=-0.005*y:0.01/(0.91*2)"
+    "patch_test_two_bodies_2d_swapped:1e-10:ux=0.39*0.01/(0.91*2)*x:uy=-0.005*y:0.01/(0.91*2)"
+    "patch_test_two_bodies_2d_friction:1e-8:ux=0.39*0.01/(0.91*2)*x:uy=-0.005*y:0.01/(0.91*2)"
+    "patch_test_two_bodies_3d.mpirun=2:1e-10:ux=0.0015*x:uy=0.0015*y:uz=-0.005*z:0.005"
+    "patch_test_two_bodies_3d.mpirun=3:1e-10:ux=0.0015*x:uy=0.0015*y:uz=-0.005*z:0.005")
+  string(REPLACE ":" ";" _case "${_case}")
+  list(GET _case 0 _test)
+  list(GET _case 1 _tolerance)
+  list(GET _case -1 _pressure)
+  list(SUBLIST _case 2 -1 _fields)
+  list(REMOVE_AT _fields -1)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  set(_output ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base})
+  add_test(NAME ${_test}.exact
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+      ${_output}/displacement-00001.csv --exact ${_fields} --tolerance ${_tolerance})
+  add_test(NAME ${_test}.uniform_pressure
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+      ${_output}/contact-00001.csv --exact "pressure=${_pressure}" --tolerance ${_tolerance})
+  set_tests_properties(${_test}.exact ${_test}.uniform_pressure PROPERTIES
+    FIXTURES_REQUIRED ${_test})
+endforeach()

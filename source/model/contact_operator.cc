@@ -196,7 +196,7 @@ namespace FrictionalContact
                 boundaries_with_candidates.insert(face->boundary_id());
                 node.position = face->vertex(v);
                 node.area     = area[first_dof];
-                node.pair     = pair;
+                node.pair     = static_cast<std::int16_t>(pair);
                 const auto [it, inserted] = found.emplace(first_dof, node);
                 if (!inserted && it->second.pair != pair)
                   throw InputError(
@@ -270,7 +270,7 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
         const unsigned int kind = nodes[j].pair < 0 ? 0 : 1;
-        const double gap = kind == 0 ? reference_gap(j) : nodes[j].gap;
+        const double gap = kind == 0 ? reference_gap(j) : pair_gaps[j];
         if (gap < smallest_gap[kind])
           {
             smallest_gap[kind] = gap;
@@ -344,6 +344,7 @@ namespace FrictionalContact
   {
     for (MortarInterface<dim> &interface : interfaces)
       interface.update(body, u_ghosted);
+    pair_gaps.assign(nodes.size(), 0.);
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair >= 0)
         {
@@ -351,7 +352,7 @@ namespace FrictionalContact
           Assert(data != nullptr, ExcInternalError());
           nodes[j].into_obstacle = data->normal;
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
-          nodes[j].gap  = data->gap;
+          pair_gaps[j]  = data->gap;
           if (!tangents.empty())
             tangents[j] = tangents_to<dim>(data->normal);
         }
@@ -546,7 +547,8 @@ namespace FrictionalContact
   ContactOperator<dim>::memory_consumption() const
   {
     return nodes.capacity() * sizeof(Node) +
-           tangents.capacity() * sizeof(tangents[0]);
+           tangents.capacity() * sizeof(tangents[0]) +
+           pair_gaps.capacity() * sizeof(double);
   }
 
 

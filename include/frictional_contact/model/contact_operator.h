@@ -13,6 +13,7 @@
 #include <frictional_contact/obstacle/interface.h>
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -79,7 +80,7 @@ namespace FrictionalContact
     gap_at_start(const unsigned int j, const Vector &start) const
     {
       return nodes[j].pair < 0 ? reference_gap(j) - local_part(j, start)[0] :
-                                 nodes[j].gap;
+                                 pair_gaps[j];
     }
 
     /**
@@ -303,15 +304,14 @@ namespace FrictionalContact
       std::array<unsigned int, dim> local_dofs;
       /// Whether the component is an unknown (not held by a fixed boundary).
       std::array<bool, dim> free;
+      /// The pair whose slave node this is (-1: a candidate facing the
+      /// obstacle); small, to sit in the padding after free.
+      std::int16_t pair = -1;
       /// t_n,j: unit vector pointing into the obstacle.
       Tensor<1, dim> into_obstacle;
       /// Lumped area on the contact boundaries (see nodal_area()); for a
       /// pair's slave node its mortar weight D_jj.
       double area = 0;
-      /// The pair whose slave node this is (-1: a candidate facing the
-      /// obstacle), and then its gap at the start of the increment.
-      int    pair = -1;
-      double gap  = 0;
     };
 
     /// The candidates on @p boundaries into @p found (their pair @p pair,
@@ -330,8 +330,10 @@ namespace FrictionalContact
 
     FrictionCone<dim>                            cone;
     std::set<types::boundary_id>                 contact_boundaries;
-    /// The pairs of two bodies (<Contact/Pairs>).
+    /// The pairs of two bodies (<Contact/Pairs>), and the gap of each
+    /// candidate that is a pair's slave node (empty without pairs).
     std::vector<MortarInterface<dim>>            interfaces;
+    std::vector<double>                          pair_gaps;
     std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
     std::vector<Node>                            nodes;
     /// T_t,j; empty without friction (the tangential operator is not needed).
