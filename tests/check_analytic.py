@@ -57,21 +57,45 @@ def read_parameters(path):
     return values
 
 
+def per_body(text, body):
+    """The value of a Material entry for @p body: the whole text, or the
+    part after 'body:' in 'ball: 1; plate: 2'."""
+    if ":" not in text:
+        return text.strip()
+    for item in text.split(";"):
+        name, value = item.split(":", 1)
+        if name.strip() == body:
+            return value.strip()
+    raise KeyError(f"no value for the body {body} in '{text}'")
+
+
 class Scene:
     def __init__(self, directory):
         p = read_parameters(directory + "/parameters.prm")
         self.rows = read_statistics(directory + "/statistics")
         self.dim = int(p.get("Dimension", "2"))
-        self.E = float(p["Material/Young's modulus"])
-        self.nu = float(p["Material/Poisson's ratio"])
-        plane_stress = self.dim == 2 and \
-            p["Material/Two-dimensional model"] == "plane stress"
-        self.E_star = self.E if plane_stress else self.E / (1 - self.nu ** 2)
+        # One body on a rigid plane (half ball), or a ball on an elastic
+        # plate: 1/E* = sum over the bodies of (1 - nu^2) / E (plane
+        # strain and 3D; E in plane stress).
+        two_bodies = p.get("Geometry/Model name") == "ball on plate"
+        bodies = ["ball", "plate"] if two_bodies else [None]
+        compliance = 0
+        try:
+            for body in bodies:
+                E = float(per_body(p["Material/Young's modulus"], body))
+                nu = float(per_body(p["Material/Poisson's ratio"], body))
+                plane_stress = self.dim == 2 and per_body(
+                    p["Material/Two-dimensional model"], body) == "plane stress"
+                compliance += 1 / E if plane_stress else (1 - nu ** 2) / E
+            self.E_star = 1 / compliance
+        except KeyError:
+            self.E_star = float("nan")  # bodies of their own materials: no Hertz
         self.mu = float(p["Contact/Friction coefficient"])
-        self.radius = float(p.get("Geometry/Half ball/Radius", "nan"))
-        self.center = [float(c) for c in
-                       p.get("Geometry/Half ball/Center", "0, 0, 0").split(",")]
-        self.planes = int(p.get("Geometry/Half ball/Symmetry planes", "0"))
+        geometry = "Geometry/Ball on plate/" if two_bodies else "Geometry/Half ball/"
+        self.radius = float(p.get(geometry + "Radius", "nan"))
+        self.center = [0.0] * 3 if two_bodies else \
+            [float(c) for c in p.get(geometry + "Center", "0, 0, 0").split(",")]
+        self.planes = int(p.get(geometry + "Symmetry planes", "0"))
         self.copies = 2 ** self.planes
         self.directory = directory
 

@@ -192,7 +192,10 @@ foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
               "hertz_2d_nu_049:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               "hertz_2d_nu_04999:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               "hertz_3d_nu_04999.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
-              cattaneo_3d_nu_04999:cattaneo)
+              cattaneo_3d_nu_04999:cattaneo
+              "hertz_two_bodies_2d:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
+              "hertz_two_bodies_3d.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
+              sliding_on_elastic_base:sliding)
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
   list(GET _case 1 _problem)

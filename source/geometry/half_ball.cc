@@ -10,7 +10,7 @@ namespace FrictionalContact
 {
   namespace Geometry
   {
-    namespace
+    namespace HalfBallFaces
     {
       enum Boundary : types::boundary_id
       {
@@ -20,6 +20,11 @@ namespace FrictionalContact
         y_symmetry = 3
       };
       constexpr types::manifold_id sphere_manifold = 0, interior_manifold = 1;
+    } // namespace HalfBallFaces
+
+    namespace
+    {
+      using namespace HalfBallFaces;
 
       /**
        * The mesh of the part of the unit ball centred at the origin:
@@ -126,10 +131,12 @@ namespace FrictionalContact
 
     template <int dim>
     void
-    HalfBall<dim>::create_coarse_mesh(
-      parallel::distributed::Triangulation<dim> &triangulation) const
+    half_ball_mesh(Triangulation<dim> &mesh,
+                   const Point<dim>   &center,
+                   const double        radius,
+                   const unsigned int  n_symmetry_planes)
     {
-      Triangulation<dim> mesh;
+      using namespace HalfBallFaces;
       unit_half_ball(mesh, n_symmetry_planes);
       mesh.reset_all_manifolds();
       mesh.set_all_manifold_ids(interior_manifold);
@@ -166,7 +173,16 @@ namespace FrictionalContact
 
       GridTools::scale(radius, mesh);
       GridTools::shift(center, mesh);
-      triangulation.copy_triangulation(mesh);
+    }
+
+
+
+    template <int dim>
+    void
+    attach_half_ball_manifolds(parallel::distributed::Triangulation<dim> &triangulation,
+                               const Point<dim>                          &center)
+    {
+      using namespace HalfBallFaces;
       triangulation.set_manifold(sphere_manifold, SphericalManifold<dim>(center));
       TransfiniteInterpolationManifold<dim> interior;
       interior.initialize(triangulation);
@@ -176,9 +192,34 @@ namespace FrictionalContact
 
 
     template <int dim>
+    void
+    HalfBall<dim>::create_coarse_mesh(
+      parallel::distributed::Triangulation<dim> &triangulation) const
+    {
+      Triangulation<dim> mesh;
+      half_ball_mesh(mesh, center, radius, n_symmetry_planes);
+      triangulation.copy_triangulation(mesh);
+      attach_half_ball_manifolds(triangulation, center);
+    }
+
+
+
+    template void
+    half_ball_mesh(Triangulation<2> &, const Point<2> &, const double, const unsigned int);
+    template void
+    half_ball_mesh(Triangulation<3> &, const Point<3> &, const double, const unsigned int);
+    template void
+    attach_half_ball_manifolds(parallel::distributed::Triangulation<2> &, const Point<2> &);
+    template void
+    attach_half_ball_manifolds(parallel::distributed::Triangulation<3> &, const Point<3> &);
+
+
+
+    template <int dim>
     std::map<std::string, types::boundary_id>
     HalfBall<dim>::boundary_names() const
     {
+      using namespace HalfBallFaces;
       std::map<std::string, types::boundary_id> names = {{"curved", curved},
                                                          {"top", top}};
       if (n_symmetry_planes >= 1)

@@ -50,7 +50,7 @@ namespace FrictionalContact
                         "Where the block's lowest corner is, relative to the "
                         "point of the base's top at x = 0 (y = 0): the "
                         "sideways shift, and the gap above the base (the last "
-                        "component, >= 0).");
+                        "component).");
     }
 
 
@@ -81,13 +81,10 @@ namespace FrictionalContact
               repetitions[k].push_back(static_cast<unsigned int>(cells[d]));
             }
         }
+      // A negative gap puts the block into the base: the contact pair
+      // refuses that, saying where and how deep.
       block_offset = Input::parse_vector<dim>(path + "Block offset",
                                               prm.get("Block offset"));
-      if (block_offset[dim - 1] < 0)
-        Input::fail(path + "Block offset",
-                    prm.get("Block offset"),
-                    "the gap (the last component) must be >= 0: the block "
-                    "would start inside the base");
     }
 
 

@@ -228,6 +228,14 @@ namespace FrictionalContact
     for (unsigned int k = 0; k < interfaces.size(); ++k)
       {
         interfaces[k].setup(body);
+        for (const types::material_id id : interfaces[k].slave_bodies())
+          if (interfaces[k].master_bodies().count(id) > 0)
+            throw InputError(
+              "<Contact/Pairs> = '" + names.name(interfaces[k].slave_boundary()) +
+              " : " + names.name(interfaces[k].master_boundary()) +
+              "': both sides are on the body '" + body.body_name(id) +
+              "'; a pair is between two bodies (the contact of a body with "
+              "itself is not supported)");
         const std::set<types::boundary_id> slave = {interfaces[k].slave_boundary()};
         with_candidates.merge(find_candidates(body, slave, k, found));
       }
@@ -350,11 +358,20 @@ namespace FrictionalContact
         {
           const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]);
           Assert(data != nullptr, ExcInternalError());
-          nodes[j].into_obstacle = data->normal;
+          // A node on a symmetry plane has its own half of the surface
+          // only: its averaged normal leans out of the plane. The free
+          // components are its normal (unit, so T_j stays orthonormal).
+          Tensor<1, dim> normal = data->normal;
+          for (unsigned int c = 0; c < dim; ++c)
+            if (!nodes[j].free[c])
+              normal[c] = 0;
+          if (normal.norm() > 0)
+            normal /= normal.norm();
+          nodes[j].into_obstacle = normal;
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
           pair_gaps[j]  = data->gap;
           if (!tangents.empty())
-            tangents[j] = tangents_to<dim>(data->normal);
+            tangents[j] = tangents_to<dim>(normal);
         }
   }
 

@@ -10,21 +10,16 @@ namespace FrictionalContact
   MortarBasis<dim>::MortarBasis(const ElasticBody<dim>     &body,
                                 const ContactOperator<dim> &contact)
   {
-    const IndexSet                  &owned       = body.locally_owned_dofs();
-    const AffineConstraints<double> &constraints = body.get_constraints();
-    const MPI_Comm                   comm        = body.get_mpi_communicator();
+    const IndexSet &owned = body.locally_owned_dofs();
+    const MPI_Comm  comm  = body.get_mpi_communicator();
 
-    // E: P_jl into the columns of the master dofs, or of the dofs a
-    // hanging master dof hangs from; a fixed one has no entries.
+    // E: P_jl into the columns of the master unknowns (the contact
+    // operator resolves hanging and held master dofs, on any rank).
     std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> E;
     contact.for_each_mortar_coupling([&](const types::global_dof_index slave,
                                          const types::global_dof_index master,
                                          const double                  p) {
-      if (!constraints.is_constrained(master))
-        E[{slave, master}] += p;
-      else
-        for (const auto &[parent, weight] : *constraints.get_constraint_entries(master))
-          E[{slave, parent}] += p * weight;
+      E[{slave, master}] += p;
     });
 
     TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);

@@ -1,6 +1,8 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/rtree.h>
 
 #include <frictional_contact/model/mortar_interface.h>
@@ -90,6 +92,7 @@ namespace FrictionalContact
                     f.dofs[v][c] = face->vertex_dof_index(v, c);
                   f.reference[v] = x[v] = face->vertex(v);
                 }
+              f.owned_cell = cell->is_locally_owned();
               // Outside is away from the cell's centre.
               f.orientation =
                 outward_normal(x, 1.) * (face->center() - cell->center()) > 0 ? 1. : -1.;
@@ -106,16 +109,22 @@ namespace FrictionalContact
   {
     const IndexSet &owned = body.locally_owned_dofs();
     const MPI_Comm  comm  = body.get_mpi_communicator();
-    // The slave faces that touch a vertex of this rank: with the ghost
-    // layer, every face around an owned vertex is there.
-    slave_faces = collect_faces(body, slave_id, [&](const auto &cell) {
-      for (const unsigned int v : cell->vertex_indices())
-        if (owned.is_element(cell->vertex_dof_index(v, 0)))
-          return true;
-      return false;
-    });
+    // The slave faces of every cell this rank sees (to find the slave
+    // vertices it owns); only those of its own cells are integrated.
+    slave_faces = collect_faces(body, slave_id, [](const auto &) { return true; });
     local_master_faces =
       collect_faces(body, master_id, [](const auto &cell) { return cell->is_locally_owned(); });
+    for (unsigned int side = 0; side < 2; ++side)
+      {
+        std::set<types::material_id> found;
+        for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() &&
+                  face->boundary_id() == (side == 0 ? slave_id : master_id))
+                found.insert(cell->material_id());
+        bodies[side] = Utilities::MPI::compute_set_union(found, comm);
+      }
 
     // Every rank gets every master face's dofs and orientation.
     std::vector<double> packed;
@@ -140,13 +149,61 @@ namespace FrictionalContact
           all_master_faces.push_back(face);
         }
 
+    // Every rank gets the constraints of every master dof: a fixed or
+    // hanging one may belong to a part of the mesh this rank cannot see.
+    // Packed as: dof, then -1 (fixed), 0 (free) or the number of the dofs
+    // it hangs from, followed by (dof, weight) pairs.
+    const AffineConstraints<double> &constraints = body.get_constraints();
+    std::vector<double>              constraint_data;
+    for (const Face &face : local_master_faces)
+      for (const NodeDofs &dofs : face.dofs)
+        for (const auto dof : dofs)
+          {
+            constraint_data.push_back(static_cast<double>(dof));
+            if (!constraints.is_constrained(dof))
+              constraint_data.push_back(0);
+            else
+              {
+                const auto *entries = constraints.get_constraint_entries(dof);
+                if (entries->empty())
+                  constraint_data.push_back(-1);
+                else
+                  {
+                    constraint_data.push_back(static_cast<double>(entries->size()));
+                    for (const auto &[parent, weight] : *entries)
+                      {
+                        constraint_data.push_back(static_cast<double>(parent));
+                        constraint_data.push_back(weight);
+                      }
+                  }
+              }
+          }
+    master_constraints.clear();
+    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, constraint_data))
+      for (std::size_t k = 0; k < part.size();)
+        {
+          const auto dof  = static_cast<types::global_dof_index>(part[k]);
+          const int  kind = static_cast<int>(part[k + 1]);
+          k += 2;
+          auto &entry = master_constraints[dof];
+          entry.fixed = kind < 0;
+          entry.parents.clear();
+          for (int e = 0; e < kind; ++e, k += 2)
+            entry.parents.emplace_back(static_cast<types::global_dof_index>(part[k]),
+                                       part[k + 1]);
+        }
+
     nodes.clear();
+    slave_vertices.clear();
     double largest = 0;
     for (const Face &face : slave_faces)
       {
         for (unsigned int v = 0; v < n_face_vertices; ++v)
           if (owned.is_element(face.dofs[v][0]))
-            nodes[face.dofs[v][0]];
+            {
+              nodes[face.dofs[v][0]];
+              slave_vertices[face.dofs[v][0]] = {face.dofs[v], face.reference[v]};
+            }
         for (unsigned int v = 0; v < n_face_vertices; ++v)
           for (unsigned int w = 0; w < v; ++w)
             largest = std::max(largest, face.reference[v].distance(face.reference[w]));
@@ -206,65 +263,110 @@ namespace FrictionalContact
   MortarInterface<dim>::update(const ElasticBody<dim> &body,
                                const Vector           &u_ghosted)
   {
-    const IndexSet &owned = body.locally_owned_dofs();
-    const auto masters = gather_master_faces(u_ghosted, body.get_mpi_communicator());
+    const MPI_Comm  comm     = body.get_mpi_communicator();
+    const IndexSet &owned    = body.locally_owned_dofs();
+    const IndexSet  relevant =
+      DoFTools::extract_locally_relevant_dofs(body.get_dof_handler());
+    const auto masters = gather_master_faces(u_ghosted, comm);
 
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+    std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> master_vertex;
     for (unsigned int m = 0; m < masters.size(); ++m)
       {
-        const auto &x = masters[m].first;
-        boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(x.begin(), x.end())),
+        const auto &[y, face] = masters[m];
+        boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(y.begin(), y.end())),
                            m);
+        for (unsigned int b = 0; b < n_face_vertices; ++b)
+          master_vertex[face->dofs[b][0]] = {face->dofs[b], y[b]};
       }
     const auto tree = pack_rtree(boxes);
 
-    // Per owned slave vertex: the sums of the face normals, the lumped
-    // weights, and the rows of M with the masters' current positions.
-    std::map<types::global_dof_index, std::map<NodeDofs, double>> rows;
-    std::map<NodeDofs, Point<dim>>                              master_position;
-    std::map<types::global_dof_index, Point<dim>>               slave_position;
-    for (auto &[dof, node] : nodes)
-      node = SlaveNode();
+    // Each face of this rank's cells adds, once, to the rows of its
+    // vertices: the face normal at each component dof, the lumped weight and
+    // the row of M at the x dof. A hanging vertex has no multiplier of its
+    // own: its part goes to the vertices it hangs from, with the
+    // constraint's weights (as its force and area do in ContactOperator).
+    const AffineConstraints<double> &hanging = body.get_hanging_node_constraints();
+    const auto to_parents = [&](const types::global_dof_index dof, const auto &add) {
+      if (!hanging.is_constrained(dof))
+        add(dof, 1.);
+      else
+        for (const auto &[parent, weight] : *hanging.get_constraint_entries(dof))
+          add(parent, weight);
+    };
+    // Written also at the vertices other ranks own: added there at compress.
+    Vector normal_sum, lumped_sum;
+    normal_sum.reinit(owned, relevant, comm, true);
+    lumped_sum.reinit(owned, relevant, comm, true);
+    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> M_entries;
     for (const Face &face : slave_faces)
-      {
-        const MortarSegments::FaceVertices<dim> x = current_vertices(face, u_ghosted);
-        const Tensor<1, dim> normal  = outward_normal(x, face.orientation);
-        const auto           lumped  = lumped_weights<dim>(x);
-        for (unsigned int a = 0; a < n_face_vertices; ++a)
-          if (owned.is_element(face.dofs[a][0]))
+      if (face.owned_cell)
+        {
+          const MortarSegments::FaceVertices<dim> x = current_vertices(face, u_ghosted);
+          const Tensor<1, dim> normal = outward_normal(x, face.orientation);
+          const auto           lumped = lumped_weights<dim>(x);
+          for (unsigned int a = 0; a < n_face_vertices; ++a)
             {
-              SlaveNode &node = nodes[face.dofs[a][0]];
-              node.normal += normal;
-              node.full_weight += lumped[a];
-              slave_position[face.dofs[a][0]] = x[a];
+              for (unsigned int c = 0; c < dim; ++c)
+                to_parents(face.dofs[a][c], [&](const auto dof, const double w) {
+                  normal_sum[dof] += w * normal[c];
+                });
+              to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
+                lumped_sum[dof] += w * lumped[a];
+              });
             }
 
-        BoundingBox<dim> search(std::vector<Point<dim>>(x.begin(), x.end()));
-        search.extend(reach);
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> near;
-        tree.query(boost::geometry::index::intersects(search), std::back_inserter(near));
-        for (const auto &[box, m] : near)
-          {
-            const auto &[y, master] = masters[m];
-            if (outward_normal(y, master->orientation) * normal >= 0)
-              continue; // not facing the slave
-            const Table<2, double> M = MortarSegments::face_integrals<dim>(x, normal, y);
-            for (unsigned int a = 0; a < n_face_vertices; ++a)
-              if (owned.is_element(face.dofs[a][0]))
+          BoundingBox<dim> search(std::vector<Point<dim>>(x.begin(), x.end()));
+          search.extend(reach);
+          std::vector<std::pair<BoundingBox<dim>, unsigned int>> near;
+          tree.query(boost::geometry::index::intersects(search), std::back_inserter(near));
+          for (const auto &[box, m] : near)
+            {
+              const auto &[y, master] = masters[m];
+              if (outward_normal(y, master->orientation) * normal >= 0)
+                continue; // not facing the slave
+              const Table<2, double> M = MortarSegments::face_integrals<dim>(x, normal, y);
+              for (unsigned int a = 0; a < n_face_vertices; ++a)
                 for (unsigned int b = 0; b < n_face_vertices; ++b)
                   if (M(a, b) != 0)
-                    {
-                      rows[face.dofs[a][0]][master->dofs[b]] += M(a, b);
-                      master_position[master->dofs[b]] = y[b];
-                    }
-          }
-      }
+                    to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
+                      M_entries[{dof, master->dofs[b][0]}] += w * M(a, b);
+                    });
+            }
+        }
+    normal_sum.compress(VectorOperation::add);
+    lumped_sum.compress(VectorOperation::add);
+
+    // The rows of M, summed over the ranks: rows are the slave vertices' x
+    // dofs, columns the master vertices'.
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+    for (const auto &[entry, value] : M_entries)
+      pattern.add(entry.first, entry.second);
+    pattern.compress();
+    TrilinosWrappers::SparseMatrix M(pattern);
+    for (const auto &[entry, value] : M_entries)
+      M.add(entry.first, entry.second, value);
+    M.compress(VectorOperation::add);
 
     for (auto &[dof, node] : nodes)
       {
+        const auto &[dofs, reference] = slave_vertices.at(dof);
+        node = SlaveNode();
+        Point<dim> position = reference;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            node.normal[c] = normal_sum[dofs[c]];
+            position[c] += u_ghosted[dofs[c]];
+          }
         node.normal /= node.normal.norm();
-        for (const auto &[master, m] : rows[dof])
-          node.weight += m;
+        node.full_weight = lumped_sum[dof];
+        std::vector<std::pair<types::global_dof_index, double>> row;
+        for (auto entry = M.begin(dof); entry != M.end(dof); ++entry)
+          if (entry->value() != 0)
+            {
+              row.emplace_back(entry->column(), entry->value());
+              node.weight += entry->value();
+            }
         // A node the master hardly covers gets no mortar row: it is free
         // this increment (a weight near 0 would make P_jl = M_jl / D_jj huge).
         if (!(node.weight > 1e-3 * node.full_weight))
@@ -273,11 +375,12 @@ namespace FrictionalContact
             node.gap    = reach;
             continue;
           }
-        for (const auto &[master, m] : rows[dof])
+        for (const auto &[column, m] : row)
           {
+            const auto &[master_dofs, master_position] = master_vertex.at(column);
             const double p = m / node.weight;
-            node.masters.emplace_back(master, p);
-            node.gap += p * (node.normal * (master_position[master] - slave_position[dof]));
+            node.masters.emplace_back(master_dofs, p);
+            node.gap += p * (node.normal * (master_position - position));
           }
       }
   }

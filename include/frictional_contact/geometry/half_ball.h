@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/grid/tria.h>
+
 #include <frictional_contact/geometry/interface.h>
 
 namespace FrictionalContact
@@ -14,6 +16,26 @@ namespace FrictionalContact
      * the manifolds that keep the curved face round under refinement.
      * Boundaries: curved, top, x symmetry, y symmetry.
      */
+    /**
+     * The mesh of the half ball (or disc) of @p radius about @p center, cut
+     * by @p n_symmetry_planes, with its boundary ids (curved 0, top 1,
+     * x symmetry 2, y symmetry 3) and manifold ids (0 on the curved face,
+     * 1 inside), for a geometry to place in its coarse mesh.
+     */
+    template <int dim>
+    void
+    half_ball_mesh(Triangulation<dim> &mesh,
+                   const Point<dim>   &center,
+                   const double        radius,
+                   const unsigned int  n_symmetry_planes);
+
+    /// The manifolds of half_ball_mesh() on the distributed mesh that
+    /// holds it (after its coarse mesh is made).
+    template <int dim>
+    void
+    attach_half_ball_manifolds(parallel::distributed::Triangulation<dim> &triangulation,
+                               const Point<dim>                          &center);
+
     template <int dim>
     class HalfBall : public Interface<dim>
     {

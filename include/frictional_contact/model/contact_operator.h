@@ -84,10 +84,11 @@ namespace FrictionalContact
     }
 
     /**
-     * Calls @p f(slave dof, master dof, P_jl) for every free displacement
-     * component of every pair's slave node on this rank and every master
-     * node of its mortar row: u_S = w_S + sum_l P_jl u_l is the basis of
-     * MortarBasis.
+     * Calls @p f(slave dof, master unknown, weight) for every free
+     * displacement component of every pair's slave node on this rank and
+     * every unknown its mortar row reaches: u_S = w_S + sum_l P_jl u_l is
+     * the basis of MortarBasis, with a hanging master dof replaced by the
+     * dofs it hangs from and a held one left out.
      */
     template <typename Function>
     void
@@ -99,7 +100,11 @@ namespace FrictionalContact
             for (const auto &[master, p] : data->masters)
               for (unsigned int c = 0; c < dim; ++c)
                 if (node.free[c])
-                  f(node.dofs[c], master[c], p);
+                  interfaces[node.pair].resolve_master_dof(
+                    master[c], [&](const types::global_dof_index unknown,
+                                   const double                  weight) {
+                      f(node.dofs[c], unknown, p * weight);
+                    });
     }
 
     /**

@@ -109,6 +109,16 @@ namespace FrictionalContact
     std::vector<std::vector<double>>
     rigid_body_modes() const;
 
+    /// The name of the body whose cells have material id @p id.
+    std::string
+    body_name(const types::material_id id) const
+    {
+      for (const auto &[name, body_id] : bodies)
+        if (body_id == id)
+          return name;
+      return std::to_string(id);
+    }
+
     /// Number of displacement dofs that are not fixed (the paper's d).
     types::global_dof_index
     n_free_dofs() const

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace FrictionalContact
@@ -86,6 +87,38 @@ namespace FrictionalContact
       return master_id;
     }
 
+    /**
+     * Calls @p add(dof, weight) for the unknowns a master displacement dof
+     * stands for: itself if it is free, the dofs it hangs from with their
+     * weights if it is a hanging one, nothing if a boundary holds it. Knows
+     * the master dofs of every rank.
+     */
+    template <typename Add>
+    void
+    resolve_master_dof(const types::global_dof_index dof, const Add &add) const
+    {
+      const auto it = master_constraints.find(dof);
+      if (it == master_constraints.end() || (!it->second.fixed && it->second.parents.empty()))
+        add(dof, 1.);
+      else
+        for (const auto &[parent, weight] : it->second.parents)
+          add(parent, weight);
+    }
+
+    /// The bodies (material ids) of the slave and of the master faces, on
+    /// all ranks (after setup()).
+    const std::set<types::material_id> &
+    slave_bodies() const
+    {
+      return bodies[0];
+    }
+
+    const std::set<types::material_id> &
+    master_bodies() const
+    {
+      return bodies[1];
+    }
+
     /// The gap of a slave node that no master face covers: how far the
     /// search looked (a node further than this from the master is free).
     double
@@ -106,6 +139,8 @@ namespace FrictionalContact
       std::array<NodeDofs, n_face_vertices>   dofs;
       std::array<Point<dim>, n_face_vertices> reference;
       double                                  orientation = 1;
+      /// Whether this rank owns the face's cell (and integrates it).
+      bool                                    owned_cell = false;
     };
 
     /// The faces with @p id of the cells @p include picks.
@@ -135,6 +170,16 @@ namespace FrictionalContact
     std::vector<Face>  local_master_faces;
     std::vector<Face>  all_master_faces;
     std::map<types::global_dof_index, SlaveNode> nodes;
+    /// The dofs and reference position of each owned slave vertex.
+    std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> slave_vertices;
+    std::array<std::set<types::material_id>, 2>  bodies;
+    /// How each master dof is held: fixed, or hanging from other dofs.
+    struct MasterConstraint
+    {
+      bool                                                     fixed = false;
+      std::vector<std::pair<types::global_dof_index, double>> parents;
+    };
+    std::map<types::global_dof_index, MasterConstraint> master_constraints;
     double reach = 0;
   };
 } // namespace FrictionalContact
