@@ -100,7 +100,9 @@ class Scene:
         self.directory = directory
 
     def normal_force(self, row):
-        return self.copies * row["Contact force " + "xyz"[self.dim - 1]]
+        # The force on the slave side: on the ball, upwards; on the plate
+        # (slave and master swapped), downwards.
+        return self.copies * abs(row["Contact force " + "xyz"[self.dim - 1]])
 
     def tangential_force(self, row):
         # Components along the surface not cut by a symmetry plane (x is

@@ -296,9 +296,15 @@ namespace FrictionalContact
                          "body, " + Input::to_text(overlap) +
                          " deep (a negative gap); move it so that every gap "
                          "is >= 0 at t = 0, for a plane its Point");
+    // A curved master's faces are chords, and the dual basis has negative
+    // parts: touching bodies can show weighted gaps of a small negative
+    // fraction of the face size. Only a deeper overlap is one.
+    double face_size = 0;
+    for (const MortarInterface<dim> &interface : interfaces)
+      face_size = std::max(face_size, interface.search_distance() / 2);
     const auto where =
       Utilities::MPI::min_max_avg(smallest_gap[1], mpi_communicator);
-    if (-where.min > 1e-10 * extent)
+    if (-where.min > 1e-2 * face_size)
       {
         const Point<dim> point = Utilities::MPI::broadcast(
           mpi_communicator, deepest[1], where.min_index);
