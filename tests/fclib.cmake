@@ -2,16 +2,22 @@
 # import and solve again, same solution) on 1 and 2 ranks, solves of FCLIB
 # files from outside the project, and the errors of the --fclib mode.
 
-foreach(_ranks 0 2)
-  set(_name fclib/round_trip)
+# Also a two-body increment (fclib/round_trip_two_bodies).
+foreach(_case "0:example2_export:round_trip" "2:example2_export:round_trip"
+              "2:two_bodies_export:round_trip_two_bodies")
+  string(REPLACE ":" ";" _case "${_case}")
+  list(GET _case 0 _ranks)
+  list(GET _case 1 _scene)
+  list(GET _case 2 _name)
+  set(_name fclib/${_name})
   if(_ranks GREATER 0)
-    set(_name fclib/round_trip.mpirun=${_ranks})
+    set(_name ${_name}.mpirun=${_ranks})
   endif()
   set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_name})
-  configure_file(fclib/example2_export.prm ${_directory}/example2_export.prm @ONLY)
+  configure_file(fclib/${_scene}.prm ${_directory}/${_scene}.prm @ONLY)
   add_test(NAME ${_name}
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/fclib_round_trip.py
-            $<TARGET_FILE:contact> example2_export.prm --ranks ${_ranks}
+            $<TARGET_FILE:contact> ${_scene}.prm --ranks ${_ranks}
             --primal-dual ${CMAKE_CURRENT_SOURCE_DIR}/fclib/primal_dual.prm
     WORKING_DIRECTORY ${_directory})
   set(_processors 1)
