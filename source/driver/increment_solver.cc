@@ -33,6 +33,7 @@ namespace FrictionalContact
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
     mortar.reset();
+    preconditioner_basis.reset();
     if (!contact.has_pairs())
       linear_solver.initialize(body.stiffness_matrix(),
                                body.rigid_body_modes(),
@@ -150,12 +151,22 @@ namespace FrictionalContact
       {
         // The contact pairs were updated to this configuration: the basis
         // in which their conditions are node-local, K_w and its AMG.
-        mortar = std::make_unique<MortarBasis<dim>>(body, contact);
-        linear_solver.release();
-        linear_solver.initialize(mortar->stiffness(),
-                                 mortar->modes_to_w(body.rigid_body_modes()),
-                                 0.,
-                                 mortar->volumetric_split());
+        mortar = std::make_shared<MortarBasis<dim>>(body, contact);
+        if (preconditioner_basis)
+          // The AMG of the first increment on this mesh still serves: the
+          // mortar rows change little from one increment to the next
+          // (doc/performance.md, "Two bodies").
+          linear_solver.replace_matrix(mortar->stiffness(),
+                                       mortar->volumetric_split());
+        else
+          {
+            linear_solver.release();
+            linear_solver.initialize(mortar->stiffness(),
+                                     mortar->modes_to_w(body.rigid_body_modes()),
+                                     0.,
+                                     mortar->volumetric_split());
+            preconditioner_basis = mortar;
+          }
         mu_pi = 0;
         TrilinosWrappers::MPI::Vector load = outcome.load;
         mortar->force_to_w(load, outcome.load);

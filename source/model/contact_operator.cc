@@ -468,6 +468,37 @@ namespace FrictionalContact
 
 
   template <int dim>
+  void
+  ContactOperator<dim>::forces_on_both_sides(const std::vector<Tensor<1, dim>> &r,
+                                             const IndexSet &relevant,
+                                             Vector         &f) const
+  {
+    apply(r, f);
+    if (!has_pairs())
+      return;
+    // Master nodes may be another rank's, and the same dof may get several
+    // slave nodes' parts: added into a writable vector, then summed.
+    Vector master;
+    master.reinit(f.locally_owned_elements(), relevant, mpi_communicator, true);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].pair >= 0)
+        if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
+          {
+            const Tensor<1, dim> force = to_cartesian(j, r[j]);
+            for (const auto &[dofs, p] : data->masters)
+              for (unsigned int c = 0; c < dim; ++c)
+                interfaces[nodes[j].pair].resolve_master_dof(
+                  dofs[c], [&](const types::global_dof_index dof, const double w) {
+                    master[dof] -= p * w * force[c];
+                  });
+          }
+    master.compress(VectorOperation::add);
+    f += master;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   ContactOperator<dim>::normal_stiffness(
     const TrilinosWrappers::SparseMatrix &K) const

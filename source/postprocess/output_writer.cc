@@ -80,9 +80,10 @@ namespace FrictionalContact
             return "free";
           case ContactState::stick:
             return "stick";
-          default:
+          case ContactState::slip:
             return "slip";
         }
+      return "unknown";
     }
   } // namespace
 
@@ -236,12 +237,14 @@ namespace FrictionalContact
     Vector u_ghosted = body.make_ghosted_vector();
     u_ghosted        = u;
 
-    // Nodal contact forces T r in Cartesian components.
+    // Nodal contact forces in Cartesian components, on both sides of a
+    // pair (the master's are those the slave side transfers).
     Vector force = body.make_vector(), force_ghosted = body.make_ghosted_vector();
     Vector increment_force_ghosted = body.make_ghosted_vector();
-    contact.apply(results.reaction, force);
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    contact.forces_on_both_sides(results.reaction, relevant, force);
     force_ghosted = force;
-    contact.apply(results.reaction_increment, force);
+    contact.forces_on_both_sides(results.reaction_increment, relevant, force);
     increment_force_ghosted = force;
 
     // Gap and state at the vertices: the solver's linearised gap at the

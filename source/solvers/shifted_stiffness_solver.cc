@@ -174,8 +174,10 @@ namespace FrictionalContact
     const double                          smallest_eigenvalue_estimate,
     const VolumetricSplit                &volumetric)
   {
-    stiffness        = &K;
-    split            = mixed_solves ? volumetric : VolumetricSplit();
+    stiffness                = &K;
+    preconditioner_stiffness = &K;
+    split                = mixed_solves ? volumetric : VolumetricSplit();
+    preconditioner_split = split;
     modes            = std::move(rigid_body_modes);
     spring_amg_tried = false;
     stiffness_floor = smallest_eigenvalue_estimate;
@@ -194,6 +196,16 @@ namespace FrictionalContact
 
 
   void
+  ShiftedStiffnessSolver::replace_matrix(const TrilinosWrappers::SparseMatrix &K,
+                                         const VolumetricSplit &volumetric)
+  {
+    stiffness = &K;
+    split     = mixed_solves ? volumetric : VolumetricSplit();
+  }
+
+
+
+  void
   ShiftedStiffnessSolver::release()
   {
     spring_amg.clear();
@@ -203,8 +215,10 @@ namespace FrictionalContact
     elastic_amg.sigma = -1;
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
-    stiffness         = nullptr;
-    split             = {};
+    stiffness                = nullptr;
+    preconditioner_stiffness = nullptr;
+    split                    = {};
+    preconditioner_split     = {};
   }
 
 

@@ -162,8 +162,11 @@ namespace FrictionalContact
     const ConditionalOStream    &pcout;
     ShiftedStiffnessSolver       linear_solver;
     ContactSolverParameters<dim> solver;
-    /// The basis u = Q w of the increment's contact pairs (none without).
-    std::unique_ptr<MortarBasis<dim>> mortar;
+    /// The basis u = Q w of the increment's contact pairs (none without),
+    /// and the one whose K_w the preconditioners were built from: they are
+    /// kept from increment to increment while the mesh stays.
+    std::shared_ptr<MortarBasis<dim>> mortar;
+    std::shared_ptr<MortarBasis<dim>> preconditioner_basis;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

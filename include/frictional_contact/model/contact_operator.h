@@ -9,7 +9,7 @@
 #include <frictional_contact/model/mortar_interface.h>
 #include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/base/input.h>
-#include <frictional_contact/driver/loading_history.h>
+#include <frictional_contact/base/time_function.h>
 #include <frictional_contact/obstacle/interface.h>
 
 #include <array>
@@ -204,6 +204,18 @@ namespace FrictionalContact
     /// f = T r for the reactions @p r of the local candidates.
     void
     apply(const std::vector<Tensor<1, dim>> &r, Vector &f) const override;
+
+    /**
+     * The nodal forces of the reactions @p r on both sides of every pair:
+     * T r at the candidates (a pair's slave nodes, and those facing the
+     * obstacle), and -sum_j P_jl F_j r_j at the master nodes (the forces
+     * the slave side transfers, M^T lambda). @p f is a locally owned
+     * vector; collective.
+     */
+    void
+    forces_on_both_sides(const std::vector<Tensor<1, dim>> &r,
+                         const IndexSet                    &relevant,
+                         Vector                            &f) const;
 
     /// f += T_j r_j.
     void

@@ -67,6 +67,16 @@ namespace FrictionalContact
       return split.reduced_stiffness != nullptr ? &split : nullptr;
     }
 
+    /**
+     * Solves with @p stiffness (and @p volumetric) from now on, but keeps
+     * the preconditioners, built on the matrix initialize() was given
+     * (which must then outlive them): for a K that changes a little, such
+     * as the Q^T K Q of contact pairs from one increment to the next.
+     */
+    void
+    replace_matrix(const TrilinosWrappers::SparseMatrix &stiffness,
+                   const VolumetricSplit                &volumetric = {});
+
     /// Drops the preconditioners and the reference to K, before K changes
     /// (a new mesh); initialize() again before the next solve.
     void
@@ -161,12 +171,14 @@ namespace FrictionalContact
     const TrilinosWrappers::PreconditionAMG &
     amg_for(const double sigma);
 
-    /// The matrix the AMG is built from: K, or A with a volumetric split.
+    /// The matrix the AMG is built from: K, or A with a volumetric split
+    /// (those initialize() was given).
     const TrilinosWrappers::SparseMatrix &
     amg_matrix() const
     {
-      return split.reduced_stiffness != nullptr ? *split.reduced_stiffness :
-                                                  *stiffness;
+      return preconditioner_split.reduced_stiffness != nullptr ?
+               *preconditioner_split.reduced_stiffness :
+               *preconditioner_stiffness;
     }
 
     void
@@ -190,6 +202,9 @@ namespace FrictionalContact
     const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
     /// K = A + B^T C^-1 B for a nearly incompressible body (else empty).
     VolumetricSplit                       split;
+    /// The K (and split) the preconditioners were built from.
+    const TrilinosWrappers::SparseMatrix *preconditioner_stiffness = nullptr;
+    VolumetricSplit                       preconditioner_split;
     std::vector<std::vector<double>>      modes;
     double                                max_diagonal = 0;
     /// A lower bound for K's spectrum (0 if unknown), to judge shifts.
