@@ -42,3 +42,8 @@ add_test(NAME docs/quoted_things_exist
 add_test(NAME docs/parameter_reference
   COMMAND ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/parameter_reference.py
           --contact $<TARGET_FILE:contact> --check)
+
+# The tables of doc/ that quote the bench CSVs are what bench/doc_tables.py
+# makes of those CSVs.
+add_test(NAME docs/tables_from_csv
+  COMMAND ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/bench/doc_tables.py --check)

@@ -22,7 +22,7 @@ namespace FrictionalContact
                   const double              *x,
                   double                    *y)
     {
-      const int     n_block_rows = offsets.size() - 1;
+      const int     n_block_rows = static_cast<int>(offsets.size()) - 1;
       const Number *v            = values.data();
       for (int node = 0; node < n_block_rows; ++node)
         {
@@ -112,13 +112,14 @@ namespace FrictionalContact
         int             node   = l / n;
         if (l >= n_rows)
           node = ghost_nodes
-                   .emplace(global / n, n_rows / n + ghost_nodes.size())
+                   .emplace(global / n,
+                            n_rows / n + static_cast<int>(ghost_nodes.size()))
                    .first->second;
-        column_position[l] = n * node + global % n;
+        column_position[l] = n * node + static_cast<int>(global % n);
         columns_in_place   = columns_in_place && column_position[l] == l;
       }
     if (!columns_in_place)
-      by_node.assign(n * (n_rows / n + ghost_nodes.size()), 0.);
+      by_node.assign(n * (n_rows / n + static_cast<int>(ghost_nodes.size())), 0.);
   }
 
 

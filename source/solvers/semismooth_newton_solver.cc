@@ -240,6 +240,96 @@ namespace FrictionalContact
         r[j] = (1 - t) * previous_r[j] + t * r[j];
     }
 
+    /**
+     * The vectors of one solve besides (du, r): K du and T r of the
+     * current iterate, the previous iterate that the line search goes back
+     * along, and work vectors.
+     */
+    template <int dim>
+    struct NewtonWorkspace
+    {
+      NewtonWorkspace(const TrilinosWrappers::MPI::Vector &du,
+                      const unsigned int                   n_candidates)
+        : K_du(du)
+        , rhs(du)
+        , w(du)
+        , T_r(du)
+        , scratch(du)
+        , previous_du(du)
+        , previous_residual(du)
+        , residual(du)
+        , previous_r(n_candidates)
+        , admissible_r(n_candidates)
+      {}
+
+      TrilinosWrappers::MPI::Vector K_du, rhs, w, T_r, scratch, previous_du;
+      /// The force balance residuals K du - p - T r of both iterates.
+      TrilinosWrappers::MPI::Vector previous_residual, residual;
+      std::vector<Tensor<1, dim>>   previous_r, admissible_r;
+    };
+
+
+
+    /// Keeps (du, r) and their force balance residual as the previous
+    /// iterate.
+    template <int dim>
+    void
+    remember_iterate(const IncrementalProblem<dim>       &problem,
+                     const TrilinosWrappers::MPI::Vector &du,
+                     const std::vector<Tensor<1, dim>>   &r,
+                     NewtonWorkspace<dim>                &work)
+    {
+      work.previous_du       = du;
+      work.previous_r        = r;
+      work.previous_residual = work.K_du;
+      work.previous_residual -= problem.load;
+      work.previous_residual -= work.T_r;
+    }
+
+
+
+    /**
+     * After the linear solve: the reactions of the new du, then the line
+     * search along the segment from the previous iterate, on the
+     * complementarity functions and the force balance (a full step can
+     * make the stick/slip sets cycle, a shorter one cannot increase this
+     * merit; the force balance is linear along the segment). Leaves (du,
+     * r), K du and T r at the accepted point.
+     */
+    template <int dim>
+    LineSearchStep
+    search_along_step(const IncrementalProblem<dim>    &problem,
+                      const std::vector<NodeCondition> &conditions,
+                      const std::vector<double>        &c,
+                      const std::vector<double>        &c_t,
+                      const double                      mu_k,
+                      const double                      mean_c,
+                      TrilinosWrappers::MPI::Vector    &du,
+                      std::vector<Tensor<1, dim>>      &r,
+                      NewtonWorkspace<dim>             &work)
+    {
+      problem.stiffness.vmult(work.K_du, du);
+      work.scratch = work.K_du;
+      work.scratch -= problem.load;
+      active_reactions(problem.contact, conditions, work.scratch, r);
+      problem.contact.apply(r, work.T_r);
+      work.residual = work.K_du;
+      work.residual -= problem.load;
+      work.residual -= work.T_r;
+      const MeritAlongStep<dim> merit(problem, c, c_t, mu_k, mean_c,
+                                      work.previous_du, du, work.previous_r, r,
+                                      work.previous_residual, work.residual,
+                                      work.scratch);
+      const LineSearchStep step = line_search(merit);
+      if (step.t < 1)
+        {
+          shorten_step(step.t, work.previous_du, work.previous_r, du, r);
+          problem.stiffness.vmult(work.K_du, du);
+          problem.contact.apply(r, work.T_r);
+        }
+      return step;
+    }
+
     /// Newton steps without progress after which the forcing term falls
     /// back to the fixed rule (ForcingTerm::fall_back()).
     constexpr unsigned int steps_before_fall_back = 5;
@@ -367,7 +457,6 @@ namespace FrictionalContact
     using namespace SemismoothNewton;
     const Timer                           timer;
     const ContactMap<dim>                &contact = problem.contact;
-    const TrilinosWrappers::SparseMatrix &K       = problem.stiffness;
     const double       mu       = contact.friction_coefficient();
     const unsigned int n        = contact.n_local();
     const MPI_Comm     comm     = du.get_mpi_communicator();
@@ -381,31 +470,26 @@ namespace FrictionalContact
     // inexact Newton steps decide the normal sets, which then cycle.
     const VolumetricSplit *volumetric = linear_solver.volumetric_split();
     const std::vector<double> c = contact.normal_stiffness(
-      volumetric != nullptr ? *volumetric->reduced_stiffness : K);
+      volumetric != nullptr ? *volumetric->reduced_stiffness :
+                              problem.stiffness);
 
     std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)
       initial_c_t[j] = tangential_factor * c[j];
     ActiveSets<dim>                  sets(initial_c_t);
     const std::vector<NodeCondition> &conditions = sets.conditions;
-    const std::vector<double>        &c_t        = sets.c_t;
 
     // From a cold start, the frictionless problem first: the normal sets
     // settle in a few steps, and friction then starts from real pressures.
     bool friction = mu > 0 && any_reaction(r, comm);
 
     const double load_norm = problem.load.l2_norm();
-
-    Vector K_du(du), rhs(du), w(du), T_r(du), scratch(du), previous_du(du);
-    // The force balance residual K du - p - T r of the previous iterate.
-    Vector                      previous_residual(du), residual(du);
-    std::vector<Tensor<1, dim>> previous_r(n), admissible_r(n);
+    NewtonWorkspace<dim> work(du, n);
     const double mean_c = mean_over_candidates(contact, c, comm);
-    K.vmult(K_du, du);
-    contact.apply(r, T_r);
+    problem.stiffness.vmult(work.K_du, du);
+    contact.apply(r, work.T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);
-    bool                      first     = true;
     // A nearly incompressible body's Newton steps need tighter solves: with
     // the forcing terms of a compressible one, the normal sets of Hertz 2D
     // at nu = 0.4999 cycle (doc/performance.md, "Nearly incompressible").
@@ -419,25 +503,25 @@ namespace FrictionalContact
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
         // Done when the residuals of the current iterate are small.
-        if (!first && meets(this->stop.tolerance, problem, du, result.residuals))
+        if (k > 0 && meets(this->stop.tolerance, problem, du, result.residuals))
           {
             result.converged = true;
             break;
           }
-        first = false;
 
-        // Sort the nodes by the augmented reactions of the current iterate.
-        const double mu_k    = friction ? mu : 0.;
-        const unsigned int changes = Utilities::MPI::sum(
-          classify(problem, du, r, c, mu_k, sets), comm);
+        // Sort the nodes by the augmented reactions of the current iterate;
+        // once the normal sets of the frictionless start have settled, sort
+        // them again with friction.
+        unsigned int changes = Utilities::MPI::sum(
+          classify(problem, du, r, c, friction ? mu : 0., sets), comm);
         if (!friction && mu > 0 && changes == 0 && k > 0)
           {
-            friction = true; // the normal sets have settled
-            first    = true;
+            friction = true;
             progress.restart(k);
-            --k;
-            continue;
+            changes = Utilities::MPI::sum(
+              classify(problem, du, r, c, mu, sets), comm);
           }
+        const double mu_k = friction ? mu : 0.;
 
         // The preconditioner for the new conditions, if they changed.
         if (preconditioner.update(sets, c, mu_k > 0, comm))
@@ -445,11 +529,7 @@ namespace FrictionalContact
 
         // The linear problem: du = du_D + w, with du_D meeting the node
         // conditions and w in the subspace where they are homogeneous.
-        previous_du       = du;
-        previous_r        = r;
-        previous_residual = K_du;
-        previous_residual -= problem.load;
-        previous_residual -= T_r;
+        remember_iterate(problem, du, r, work);
         unsigned int linear_iterations = 0;
         const double forcing_term      = forcing.current();
         try
@@ -457,7 +537,7 @@ namespace FrictionalContact
             linear_iterations =
               solve_linearized(problem, sets, P, preconditioner, linear_solver, mu_k,
                                forcing_term, 0.1 * this->stop.tolerance * load_norm,
-                               du, K_du, rhs, w);
+                               du, work.K_du, work.rhs, work.w);
           }
         catch (const SolverControl::NoConvergence &e)
           {
@@ -466,28 +546,11 @@ namespace FrictionalContact
           }
         result.linear_iterations += linear_iterations;
 
-        K.vmult(K_du, du);
-        scratch = K_du;
-        scratch -= problem.load;
-        active_reactions(contact, conditions, scratch, r);
-
-        // Line search along the segment from the previous iterate, on the
-        // complementarity functions and the force balance: a full step can
-        // make the stick/slip sets cycle, a shorter one cannot increase
-        // this merit. The force balance is linear along the segment.
-        contact.apply(r, T_r);
-        residual = K_du;
-        residual -= problem.load;
-        residual -= T_r;
-        const MeritAlongStep<dim> merit(problem, c, c_t, mu_k, mean_c,
-                                        previous_du, du, previous_r, r,
-                                        previous_residual, residual, scratch);
-        const LineSearchStep step = line_search(merit);
-        const double         t    = step.t;
+        const LineSearchStep step = search_along_step(
+          problem, conditions, c, sets.c_t, mu_k, mean_c, du, r, work);
         forcing.record(std::sqrt(step.merit_before),
                        std::sqrt(step.merit_after),
-                       t == 1);
-
+                       step.t == 1);
         if (progress.stalled(k, step.merit_after))
           {
             result.failure =
@@ -496,18 +559,12 @@ namespace FrictionalContact
           }
         if (k >= progress.last_progress_step() + steps_before_fall_back)
           forcing.fall_back();
-        if (t < 1)
-          {
-            shorten_step(t, previous_du, previous_r, du, r);
-            K.vmult(K_du, du);
-          }
-        contact.apply(r, T_r);
 
-        previous_du -= du;
+        work.previous_du -= du;
         result.iterations = k + 1;
-        result.last_step  = previous_du.l2_norm();
-        result.residuals =
-          admissible_residuals(problem, du, K_du, r, admissible_r, scratch, w);
+        result.last_step  = work.previous_du.l2_norm();
+        result.residuals  = admissible_residuals(
+          problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);
         const HistoryRow row{k + 1,
                              timer.wall_time(),
                              result.residuals,
@@ -518,7 +575,7 @@ namespace FrictionalContact
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);
-        RunControl::stop_if_urgent(du.get_mpi_communicator());
+        RunControl::stop_if_urgent(comm);
         if (!result.residuals.finite())
           {
             result.failure = "NaN or infinity at Newton iteration " +
@@ -526,7 +583,7 @@ namespace FrictionalContact
             break;
           }
       }
-    r = admissible_r;
+    r = work.admissible_r;
     if (!result.converged && result.failure.empty())
       result.failure = "no convergence in " +
                        std::to_string(this->stop.max_iterations) +

@@ -287,8 +287,8 @@ namespace FrictionalContact
       }
     direct_problem->SetRHS(const_cast<Epetra_Vector *>(&b));
     direct_problem->SetLHS(&x);
-    [[maybe_unused]] const int error = direct_solver->Solve();
-    Assert(error == 0, LACExceptions::ExcTrilinosError(error));
+    const int error = direct_solver->Solve();
+    AssertThrow(error == 0, LACExceptions::ExcTrilinosError(error));
   }
 
 

@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""Writes the tables of doc/ that quote the bench CSVs, from the CSVs.
+
+A table in a doc page sits between two markers,
+
+    <!-- table: two-bodies -->
+    | ... |
+    <!-- end table -->
+
+and TABLES below says how each one is made from its CSV in
+doc/benchmarks/. The bench scripts call write_tables() after they write
+their CSV; `--check` (the test docs/tables_from_csv) fails with the
+name of every table whose text in doc/ differs from what its CSV makes,
+so that a number in those tables cannot drift from the measurement.
+
+usage: bench/doc_tables.py [--check] [--root .]
+"""
+import argparse
+import csv
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+
+def rows(root, name):
+    with open(os.path.join(root, "doc", "benchmarks", name), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def markdown(header, body):
+    lines = ["| " + " | ".join(header) + " |",
+             "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(cell) for cell in row) + " |" for row in body]
+    return "\n".join(lines)
+
+
+def thousands(value):
+    return f"{int(float(value)):,}"
+
+
+def seconds(value):
+    """Two significant digits (whole seconds from 10 s on)."""
+    value = float(value)
+    return f"{value:.0f} s" if value >= 10 else f"{value:#.2g} s"
+
+
+def two_bodies(root):
+    body = []
+    for r in rows(root, "two-bodies.csv"):
+        if r["converged"] != "1":
+            body.append([r["size"], r["ranks"], thousands(r["d"]), r["c"],
+                         "failed"] + [""] * 7)
+            continue
+        increments = int(r["increments"])
+        kb_per_unknown = float(r["peak_memory_mb"]) * 1024 / float(r["d"])
+        body.append([r["size"], r["ranks"], thousands(r["d"]), thousands(r["c"]),
+                     f"{int(r['newton_iterations']) / increments:.1f}",
+                     f"{int(r['krylov_iterations']) / int(r['newton_iterations']):.1f}",
+                     seconds(float(r["contact_solve_s"]) / increments),
+                     seconds(r["elastic_solve_s"]),
+                     r["elastic_solves_per_increment"],
+                     seconds(r["elastic_solve_reused_amg_s"]),
+                     r["elastic_solves_reused_amg_per_increment"],
+                     f"{kb_per_unknown:.1f}"])
+    return markdown(["size", "ranks", "d", "c", "Newton steps per increment",
+                     "Krylov per Newton step", "contact solve per increment",
+                     "elastic solve (unit)", "in units", "elastic solve, AMG reused",
+                     "in those", "peak kB per unknown (largest rank)"], body)
+
+
+NU = ["0.3", "0.49", "0.499", "0.4999"]
+VARIANTS = ["standard", "B-bar mixed", "B-bar condensed"]
+
+
+def by_key(table):
+    return {(r["case"], r["size"], r["nu"], r["variant"]): r for r in table}
+
+
+def lame_elastic(root):
+    table = by_key(rows(root, "nearly-incompressible.csv"))
+    sizes = [("3", "5,400 dofs"), ("4", "39,984 dofs")]
+    header = ["nu"] + [f"{v}, {label}" if v == "standard" else v
+                       for _, label in sizes for v in VARIANTS]
+    body = []
+    for nu in NU:
+        line = [nu]
+        for size, _ in sizes:
+            for variant in VARIANTS:
+                r = table.get(("lame", size, nu, variant))
+                line.append(f"{r['elastic_krylov_iterations']} ({seconds(r['elastic_s'])})"
+                            if r and r["converged"] == "1" else "failed")
+        body.append(line)
+    return markdown(header, body)
+
+
+def example2_newton(root):
+    table = by_key(rows(root, "nearly-incompressible.csv"))
+    sizes = ["8", "12"]
+    header = ["nu"] + [f"N_Y = {s} {v}" if v == "standard" else v
+                       for s in sizes for v in VARIANTS]
+    body = []
+    for nu in NU:
+        line = [nu]
+        for size in sizes:
+            for variant in VARIANTS:
+                r = table.get(("example2", size, nu, variant))
+                line.append(f"{r['iterations']} / {r['krylov_iterations']}, "
+                            f"{r['ratio_to_elastic']} ({r['elastic_krylov_iterations']})"
+                            if r and r["converged"] == "1" else "failed")
+        body.append(line)
+    return markdown(header, body)
+
+
+TABLES = {
+    "two-bodies": two_bodies,
+    "nearly-incompressible-lame": lame_elastic,
+    "nearly-incompressible-example2": example2_newton,
+}
+
+MARKED = re.compile(r"(<!-- table: ([a-z0-9-]+) -->\n)(.*?)(\n<!-- end table -->)", re.S)
+
+
+def pages(root):
+    folder = os.path.join(root, "doc")
+    return [os.path.join(folder, name) for name in sorted(os.listdir(folder))
+            if name.endswith(".md")]
+
+
+def write_tables(root=ROOT, check=False):
+    """Rewrites (or with check, compares) every marked table; returns the
+    names of the tables that differ, and of markers with no known table."""
+    differing = []
+    for page in pages(root):
+        with open(page) as f:
+            text = f.read()
+
+        def replace(match):
+            name = match.group(2)
+            if name not in TABLES:
+                differing.append(f"{os.path.relpath(page, root)}: unknown table '{name}'")
+                return match.group(0)
+            made = TABLES[name](root)
+            if made != match.group(3):
+                differing.append(f"{os.path.relpath(page, root)}: table '{name}'")
+            return match.group(1) + made + match.group(4)
+
+        new_text = MARKED.sub(replace, text)
+        if not check and new_text != text:
+            with open(page, "w") as f:
+                f.write(new_text)
+    return differing
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--check", action="store_true",
+                        help="only compare; exit 1 if a table differs from its CSV")
+    parser.add_argument("--root", default=ROOT, help="the top of the repository")
+    args = parser.parse_args()
+    differing = write_tables(args.root, args.check)
+    for line in differing:
+        print(("differs from its CSV: " if args.check else "rewritten: ") + line)
+    if args.check and differing:
+        print("run python3 bench/doc_tables.py to rewrite them from the CSVs")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
