@@ -55,7 +55,7 @@ def two_bodies(root):
                          "failed"] + [""] * 7)
             continue
         increments = int(r["increments"])
-        kb_per_unknown = float(r["peak_memory_mb"]) * 1024 / float(r["d"])
+        kb_per_unknown = float(r["peak_memory_mb"]) * int(r["ranks"]) * 1024 / float(r["d"])
         body.append([r["size"], r["ranks"], thousands(r["d"]), thousands(r["c"]),
                      f"{int(r['newton_iterations']) / increments:.1f}",
                      f"{int(r['krylov_iterations']) / int(r['newton_iterations']):.1f}",
@@ -68,7 +68,7 @@ def two_bodies(root):
     return markdown(["size", "ranks", "d", "c", "Newton steps per increment",
                      "Krylov per Newton step", "contact solve per increment",
                      "elastic solve (unit)", "in units", "elastic solve, AMG reused",
-                     "in those", "peak kB per unknown (largest rank)"], body)
+                     "in those", "peak kB per unknown (largest rank x ranks)"], body)
 
 
 NU = ["0.3", "0.49", "0.499", "0.4999"]
@@ -120,7 +120,7 @@ TABLES = {
     "nearly-incompressible-example2": example2_newton,
 }
 
-MARKED = re.compile(r"(<!-- table: ([a-z0-9-]+) -->\n)(.*?)(\n<!-- end table -->)", re.S)
+MARKED = re.compile(r"(<!-- table: ([a-z0-9-]+) -->\n)(.*?)\n?(<!-- end table -->)", re.S)
 
 
 def pages(root):
@@ -145,7 +145,7 @@ def write_tables(root=ROOT, check=False):
             made = TABLES[name](root)
             if made != match.group(3):
                 differing.append(f"{os.path.relpath(page, root)}: table '{name}'")
-            return match.group(1) + made + match.group(4)
+            return match.group(1) + made + "\n" + match.group(4)
 
         new_text = MARKED.sub(replace, text)
         if not check and new_text != text:

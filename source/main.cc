@@ -22,8 +22,9 @@ namespace
 {
   const char *usage =
     "Usage: contact [options] <parameter file>\n"
-    "Solves the quasi-static frictional contact problem of an elastic body\n"
-    "and rigid obstacles described in a parameter file (see parameters/).\n"
+    "Solves the quasi-static frictional contact problem of elastic bodies\n"
+    "with each other (mortar pairs) and with rigid obstacles, described in a\n"
+    "parameter file (see parameters/).\n"
     "Options:\n"
     "  --print-parameters [file]  print every parameter with its "
     "documentation\n"
