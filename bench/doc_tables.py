@@ -114,7 +114,58 @@ def example2_newton(root):
     return markdown(header, body)
 
 
+def kanno_series(root):
+    """One line per size: the default and (where measured) the previous
+    inner solves side by side, with the paper's time where it has one."""
+    table = rows(root, "kanno-series.csv")
+    by_size = {}
+    for r in table:
+        by_size.setdefault((int(r["example"]), int(r["N_Y"])), {})[r["path"]] = r
+    body = []
+    for (example, n_y), paths in sorted(by_size.items()):
+        new = paths.get("default")
+        old = paths.get("previous")
+        line = ["I" if example == 1 else "II", n_y]
+        if new is None or new["converged"] != "1":
+            body.append(line + [""] * 9)
+            continue
+        line += [thousands(new["d"]), thousands(new["iterations"]),
+                 f"{int(new['krylov_iterations']) / int(new['iterations']):.2f}",
+                 seconds(new["solve_s"]), f"{float(new['ms_per_iteration']):.3g}",
+                 new["ratio_to_elastic"]]
+        if old is not None and old["converged"] == "1":
+            line += [f"{thousands(old['iterations'])}, {seconds(old['solve_s'])}",
+                     f"{float(old['solve_s']) / float(new['solve_s']):.1f}"]
+        else:
+            line += ["", ""]
+        line.append(seconds(new["paper_s"]) if new["paper_s"] else "")
+        body.append(line)
+    return markdown(["example", "N_Y", "d", "iterations", "Krylov per iteration",
+                     "solve", "ms per iteration", "in elastic solves",
+                     "previous inner solves: iterations, solve", "speed-up",
+                     "paper (Matlab)"], body)
+
+
+def kanno_variants(root):
+    table = rows(root, "kanno-variants.csv")
+    body = []
+    for r in table:
+        if r["converged"] != "1":
+            body.append([r["example"], r["initial_alpha"], r["preconditioner"],
+                         r["start"], r["tolerance"], "failed", "", ""])
+            continue
+        body.append(["I, N_Y = 40" if r["example"] == "1" else "II, N_Y = 10",
+                     r["initial_alpha"], r["preconditioner"], r["start"],
+                     r["tolerance"], thousands(r["iterations"]),
+                     r["krylov_per_iteration"], seconds(r["solve_s"])])
+    return markdown(["example", "Initial alpha", "preconditioner", "CG start",
+                     "primal step tolerance", "iterations", "Krylov per iteration",
+                     "solve"], body)
+
+
 TABLES = {
+    "kanno-series": kanno_series,
+    "kanno-variants": kanno_variants,
     "two-bodies": two_bodies,
     "nearly-incompressible-lame": lame_elastic,
     "nearly-incompressible-example2": example2_newton,

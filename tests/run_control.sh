@@ -17,14 +17,24 @@ set -u
 contact=$1; source_dir=$2; python=$3
 fail() { echo "*** $1"; exit 1; }
 rm -rf out-*
-# Kanno's method on example I in ten increments: 0.2 to 1 s each, long
-# enough to be caught in the middle of a contact solve.
+# Kanno's method on example I in ten increments, with slow inner solves
+# (AMG-CG from du_k to 1e-6): 0.2 to 1 s each, long enough to be caught
+# in the middle of a contact solve.
 scene() {
   cat <<EOT
 include $source_dir/parameters/example1.prm
 set Output directory = out-$1
 subsection Loading
   set Number of increments = 10
+end
+subsection Linear solver
+  set Preconditioner = amg
+end
+subsection Contact solver
+  subsection Accelerated primal-dual
+    set Primal step start = previous iterate
+    set Primal step tolerance = 1e-6
+  end
 end
 subsection Output
   set Write vtu = false

@@ -383,7 +383,12 @@ namespace FrictionalContact
           << Utilities::MPI::max(linear.amg_setup_wall_time(), mpi_communicator)
           << " s; Krylov solves = "
           << Utilities::MPI::max(linear.krylov_seconds, mpi_communicator)
-          << " s;)";
+          << " s;";
+    if (linear.n_factorizations > 0)
+      pcout << " Cholesky factorizations = "
+            << Utilities::MPI::max(linear.factorization_seconds, mpi_communicator)
+            << " s; (" << linear.n_factorizations << " of them)";
+    pcout << ")";
     pcout << " peak memory = "
           << Utilities::MPI::max(memory.VmHWM, mpi_communicator) / 1024.
           << " MB per rank (largest)" << std::endl;

@@ -80,15 +80,34 @@ namespace FrictionalContact
                       "CG iterations allowed per solve (>= 1).");
     prm.declare_entry("Preconditioner",
                       "auto",
-                      Patterns::Selection("auto|amg|jacobi"),
-                      "auto: Jacobi while max diag(K) <= Jacobi threshold * "
-                      "(1/beta), else AMG. amg: always Trilinos ML. jacobi: "
-                      "always the diagonal.");
+                      Patterns::Selection("auto|amg|jacobi|cholesky"),
+                      "auto: for the primal steps (K + sigma I with sigma = "
+                      "1/beta), Jacobi while max diag(K) <= Jacobi threshold "
+                      "* sigma, else a sparse Cholesky factorization of K + "
+                      "sigma_ref I (CHOLMOD) on one process if its factor "
+                      "has at most 12 times the nonzeros of K, else AMG; for "
+                      "the elastic solves AMG. amg: always Trilinos ML. "
+                      "jacobi: always the diagonal. cholesky: the "
+                      "factorization for the primal steps on one process "
+                      "(AMG on several), AMG for the elastic solves.");
+    prm.declare_entry("Cholesky refactorization factor",
+                      "1.5",
+                      Patterns::Double(1.),
+                      "The factorization of K + sigma_ref I preconditions "
+                      "the primal steps while their shift sigma = 1/beta "
+                      "stays within this factor of sigma_ref (>= 1): CG "
+                      "needs more iterations the larger it is, and a "
+                      "refactorization costs about as much as 40 solves "
+                      "with the factor.");
     prm.declare_entry("Jacobi threshold",
-                      "2",
+                      "50",
                       Patterns::Double(0.),
                       "See Preconditioner = auto: how strongly the identity "
-                      "term of beta K + I must dominate for Jacobi (>= 0).");
+                      "term of beta K + I must dominate for Jacobi (>= 0). "
+                      "Jacobi's iterations grow as the square root of max "
+                      "diag(K) / sigma; at 20 (the paper's examples) it is "
+                      "faster than AMG and Cholesky, at 200 it is slower "
+                      "(doc/performance.md, \"Kanno's method\").");
     prm.declare_entry("AMG rebuild factor",
                       "2",
                       Patterns::Double(1.),
@@ -155,6 +174,7 @@ namespace FrictionalContact
     preconditioner_choice = prm.get("Preconditioner");
     jacobi_threshold      = prm.get_double("Jacobi threshold");
     rebuild_factor        = prm.get_double("AMG rebuild factor");
+    refactorization_factor = prm.get_double("Cholesky refactorization factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother_type         = prm.get("AMG smoother type");
     coarse_solver         = "Amesos-" + prm.get("AMG coarse solver");
@@ -184,6 +204,7 @@ namespace FrictionalContact
     elastic_amg.sigma = -1;
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
+    cholesky.clear();
 
     diagonal.reinit(K.locally_owned_domain_indices(), K.get_mpi_communicator());
     for (const auto i : K.locally_owned_domain_indices())
@@ -212,6 +233,7 @@ namespace FrictionalContact
     spring_amg_tried = false;
     elastic_amg.preconditioner.clear();
     shifted_amg.preconditioner.clear();
+    cholesky.clear();
     elastic_amg.sigma = -1;
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
@@ -228,9 +250,48 @@ namespace FrictionalContact
   {
     if (preconditioner_choice == "jacobi")
       return true;
-    if (preconditioner_choice == "amg")
+    if (preconditioner_choice == "amg" || preconditioner_choice == "cholesky")
       return false;
     return max_diagonal <= jacobi_threshold * sigma;
+  }
+
+
+
+  bool
+  ShiftedStiffnessSolver::use_cholesky(const double sigma)
+  {
+    if (sigma <= 0 || volumetric_split() != nullptr ||
+        !(preconditioner_choice == "auto" ||
+          preconditioner_choice == "cholesky") ||
+        !ShiftedCholesky::applicable(*preconditioner_stiffness))
+      return false;
+    if (!cholesky.analyzed())
+      {
+        const Timer timer;
+        cholesky.analyze(*preconditioner_stiffness);
+        factorization_seconds += timer.wall_time();
+      }
+    // A factor much denser than K (3D beyond some 10^5 unknowns) costs
+    // more per solve than the AMG's V-cycle, and memory.
+    return preconditioner_choice == "cholesky" ||
+           cholesky.predicted_factor_nonzeros() <=
+             12. * preconditioner_stiffness->n_nonzero_elements();
+  }
+
+
+
+  const ShiftedCholesky &
+  ShiftedStiffnessSolver::cholesky_for(const double sigma)
+  {
+    const double reference = cholesky.shift();
+    if (reference > 0 && sigma >= reference / refactorization_factor &&
+        sigma <= reference * refactorization_factor)
+      return cholesky;
+    const Timer timer;
+    cholesky.factorize(sigma);
+    ++n_factorizations;
+    factorization_seconds += timer.wall_time();
+    return cholesky;
   }
 
 
@@ -382,6 +443,14 @@ namespace FrictionalContact
             last_linear_solve = "CG iterations (Jacobi)";
             const Timer timer;
             cg.solve(op, x, b, DiagonalPreconditioner(inverse_diagonal));
+            krylov_seconds += timer.wall_time();
+          }
+        else if (use_cholesky(sigma))
+          {
+            const ShiftedCholesky &factor = cholesky_for(sigma);
+            last_linear_solve = "CG iterations (Cholesky)";
+            const Timer timer;
+            cg.solve(op, x, b, factor);
             krylov_seconds += timer.wall_time();
           }
         else if (volumetric_split() != nullptr)

@@ -53,6 +53,8 @@ namespace FrictionalContact
     double       initial_alpha;
     bool         paper_scaling;
     double       step_tolerance;
+    /// Whether CG starts a step from the extrapolation of the last two.
+    bool         extrapolate_start;
     unsigned int stagnation_window;
   };
 } // namespace FrictionalContact

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/shifted_cholesky.h>
 #include <frictional_contact/solvers/spring_amg.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
@@ -23,10 +24,14 @@ namespace FrictionalContact
    * plain elastic problem. Owns the preconditioner and decides, from sigma,
    * which one to use and when to rebuild it:
    *
-   * - Jacobi (diagonal of K + sigma I) when the identity dominates,
-   *   i.e. max diag(K) <= "Jacobi threshold" * sigma: ML's aggregation
-   *   breaks down on such near-identity matrices, and CG needs few
-   *   iterations anyway;
+   * - Jacobi (diagonal of K + sigma I) when the identity is strong
+   *   enough, max diag(K) <= "Jacobi threshold" * sigma: CG's iterations
+   *   then depend on that ratio, not on the mesh, and each costs one
+   *   product with K (the paper's examples have ratios 2 to 20);
+   * - else, for sigma > 0 on one process, a sparse Cholesky factorization
+   *   of K + sigma_ref I (ShiftedCholesky) if its factor is not much
+   *   denser than K, refactored when sigma leaves a factor "Cholesky
+   *   refactorization factor" of sigma_ref;
    * - otherwise Trilinos ML (smoothed aggregation, or plain aggregation
    *   with "AMG prolongator damping" = 0, with the rigid-body modes as near
    *   null space) built on K + sigma_ref I, reused while sigma stays
@@ -139,6 +144,10 @@ namespace FrictionalContact
     /// How many times the AMG was set up, and the seconds ML's set-ups took.
     unsigned int n_amg_setups = 0;
     double       amg_setup_seconds = 0;
+    /// How many numeric Cholesky factorizations were made, and their
+    /// seconds (the ordering included).
+    unsigned int n_factorizations = 0;
+    double       factorization_seconds = 0;
     /// Wall seconds in Krylov solves with K (the preconditioner's
     /// applications included, its set-ups not): the elastic solves, the
     /// primal steps and the Newton systems.
@@ -152,6 +161,16 @@ namespace FrictionalContact
   private:
     bool
     use_jacobi(const double sigma) const;
+
+    /// Whether the primal step with @p sigma is preconditioned by the
+    /// Cholesky factorization (analyzing K on first use, to see whether
+    /// its factor is sparse enough).
+    bool
+    use_cholesky(const double sigma);
+
+    /// The factorization for @p sigma, refactored if needed.
+    const ShiftedCholesky &
+    cholesky_for(const double sigma);
 
     /// How many of the rigid-body modes make the AMG's near null space:
     /// all, or the dim translations (<AMG near null space>).
@@ -190,6 +209,7 @@ namespace FrictionalContact
     std::string  preconditioner_choice;
     double       jacobi_threshold;
     double       rebuild_factor;
+    double       refactorization_factor;
     unsigned int smoother_sweeps;
     std::string  smoother_type;
     std::string  coarse_solver;
@@ -218,6 +238,9 @@ namespace FrictionalContact
     /// The AMG of K with springs, for the Newton systems.
     SpringAMG spring_amg;
     bool      spring_amg_tried = false;
+
+    /// The factorization of K + sigma_ref I for the shifted solves.
+    ShiftedCholesky cholesky;
 
     Vector diagonal;
     Vector inverse_diagonal;
