@@ -138,7 +138,7 @@ def kanno_series(root):
                      f"{float(old['solve_s']) / float(new['solve_s']):.1f}"]
         else:
             line += ["", ""]
-        line.append(seconds(new["paper_s"]) if new["paper_s"] else "")
+        line.append(f"{float(new['paper_s']):.1f} s" if new["paper_s"] else "")
         body.append(line)
     return markdown(["example", "N_Y", "d", "iterations", "Krylov per iteration",
                      "solve", "ms per iteration", "in elastic solves",
