@@ -44,12 +44,12 @@ def settings(uniform, local, cycles):
     """(strategy, setting, lines of the parameter file) of every run: the
     global refinements of @p uniform, the local refinements of @p local and
     the adaptive cycles of @p cycles."""
-    return ([("uniform", g, f"subsection Geometry\n  set Global refinements = {g}\n"
+    return ([("uniform", g, f"subsection Mesh refinement\n  set Global refinements = {g}\n"
               "  set Local refinements = 0\nend\n") for g in uniform] +
-            [("local", level, "subsection Geometry\n"
+            [("local", level, "subsection Mesh refinement\n"
               f"  set Local refinements = {level}\nend\n") for level in local] +
-            [("adaptive", c, "subsection Geometry\n  set Local refinements = 2\n"
-              "  set Refinement radius = 0.3\nend\nsubsection Mesh refinement\n"
+            [("adaptive", c, "subsection Mesh refinement\n  set Local refinements = 2\n"
+              "  set Refinement radius = 0.3\n"
               "  set Strategy = kelly and contact state\n  set Refine fraction = 0.1\n"
               f"  set Cycles = {c}\n  set Maximum dofs = 1e7\nend\n") for c in cycles])
 
@@ -63,7 +63,8 @@ def run(contact, ranks, dim, strategy, setting, lines, folder):
     prm = os.path.join(folder, "scene.prm")
     with open(prm, "w") as f:
         f.write(f"include {scene}\nset Output directory = {folder}/output\n"
-                f"{lines}subsection Output\n  set Write vtu = false\nend\n")
+                f"{lines}subsection Postprocess\n subsection Visualization\n"
+                "  set Write vtu = false\n end\nend\n")
     env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     command = ([contact, prm] if ranks == 1 else

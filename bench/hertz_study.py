@@ -36,9 +36,9 @@ def run(contact, dim, level, folder):
     prm = os.path.join(folder, "scene.prm")
     with open(prm, "w") as f:
         f.write(f"include {scene}\nset Output directory = {folder}/output\n"
-                f"subsection Geometry\n  set Local refinements = {level}\nend\n"
-                "subsection Output\n  set Write vtu = false\n"
-                "  set Write csv tables = true\nend\n")
+                f"subsection Mesh refinement\n  set Local refinements = {level}\nend\n"
+                "subsection Postprocess\n subsection Visualization\n"
+                "  set Write vtu = false\n  set Write csv tables = true\n end\nend\n")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     start = time.time()
     done = subprocess.run([contact, prm], capture_output=True, text=True, env=env)

@@ -75,8 +75,9 @@ def check(script, arguments):
 
 def lame(contact, refinements, nu, variant):
     text = (f"include {ROOT}/parameters/lame_3d.prm\nset Output directory = output\n"
-            f"subsection Geometry\n set Global refinements = {refinements}\nend\n"
-            "subsection Output\n set Write vtu = false\n set Write csv tables = true\nend\n"
+            f"subsection Mesh refinement\n set Global refinements = {refinements}\nend\n"
+            "subsection Postprocess\n subsection Visualization\n  set Write vtu = false\n"
+            "  set Write csv tables = true\n end\nend\n"
             + material(nu, variant))
     with tempfile.TemporaryDirectory() as folder:
         code, output, _ = run(text, 1, folder, contact)
@@ -114,7 +115,8 @@ def hertz(contact, dimension, nu, variant):
             "@PROJECT_SOURCE_DIR@", ROOT)
     else:
         text = (f"include {ROOT}/parameters/hertz_3d_rubber.prm\n"
-                "subsection Output\n set Write vtu = false\n set Write csv tables = true\nend\n")
+                "subsection Postprocess\n subsection Visualization\n  set Write vtu = false\n"
+                "  set Write csv tables = true\n end\nend\n")
     text += "set Output directory = output\n" + material(nu, variant)
     with tempfile.TemporaryDirectory() as folder:
         code, output, _ = run(text, 1, folder, contact)

@@ -46,7 +46,8 @@ def main():
         for ranks in (int(r) for r in args.ranks.split(",")):
             contact_scene = scene(2, n_y, 0.5, "semismooth Newton")
             if args.vtu:
-                contact_scene += "subsection Output\n set Write vtu = true\nend\n"
+                contact_scene += ("subsection Postprocess\n subsection Visualization\n"
+                                  "  set Write vtu = true\n end\nend\n")
             _, elastic, _ = best_run(scene(2, n_y, 0.5, None, False), ranks,
                                      args.repeat, args.contact)
             code, values, _ = best_run(contact_scene, ranks, args.repeat,

@@ -69,7 +69,8 @@ subsection Boundary conditions
 end
 """
         floor = "0, 0, -0.005"
-    text += "set Output directory = output\nsubsection Output\n set Write vtu = false\nend\n"
+    text += ("set Output directory = output\nsubsection Postprocess\n"
+             " subsection Visualization\n  set Write vtu = false\n end\nend\n")
     if not contact:
         return text
     text += f"""subsection Contact

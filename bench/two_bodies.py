@@ -49,8 +49,10 @@ end
 subsection Contact
   set Pairs = {pairs}
 end
-subsection Output
-  set Write vtu = false
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+  end
 end
 """
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Plots convergence histories (history-NNNNN.txt, written with
-Output/Write convergence history = true) as the paper's figures: each of
+Postprocess/Convergence history/Write convergence history = true) as the paper's figures: each of
 the three residuals and the step |du_k+1 - du_k| against wall time (or
 iterations), on log axes, several runs overlaid.
 

@@ -164,7 +164,7 @@ def main():
     for path in (pvd, prm):
         if not os.path.exists(path):
             sys.exit(f"{path} is missing: give a run's output directory "
-                     "(with Output/Write vtu = true)")
+                     "(with Postprocess/Visualization/Write vtu = true)")
     try:
         from paraview import simple
     except ImportError:

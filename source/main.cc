@@ -34,7 +34,7 @@ namespace
     "defaults\n"
     "  --fclib-export <list>      write the incremental problems of these\n"
     "                             increments ('1,3' or 'all') as FCLIB files\n"
-    "                             (sets Output/FCLIB export)\n"
+    "                             (sets Postprocess/FCLIB export/Increments)\n"
     "\n"
     "  contact --fclib <problem.hdf5> [options] [parameter file]\n"
     "solves an FCLIB global problem with the method of <Contact solver/Method>\n"
@@ -92,8 +92,10 @@ namespace
       options.parameters->parse(prm);
     if (!options.fclib_export.empty())
       {
-        prm.enter_subsection("Output");
-        prm.set("FCLIB export", options.fclib_export);
+        prm.enter_subsection("Postprocess");
+        prm.enter_subsection("FCLIB export");
+        prm.set("Increments", options.fclib_export);
+        prm.leave_subsection();
         prm.leave_subsection();
       }
     if (task != Task::run)

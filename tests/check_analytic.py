@@ -119,7 +119,7 @@ class Scene:
         """Median distance from a node in contact to its nearest neighbour."""
         files = sorted(glob.glob(self.directory + "/contact-*.csv"))
         if not files:
-            sys.exit("no contact-*.csv: set Output/Write csv tables = true")
+            sys.exit("no contact-*.csv: set Postprocess/Visualization/Write csv tables = true")
         with open(files[-1]) as f:
             header = f.readline().strip().split(",")
             points = []
@@ -156,7 +156,7 @@ def pressure_profile_error(scene, a_hertz, p_hertz):
     locking element) fails this even where its peak is right."""
     files = sorted(glob.glob(scene.directory + "/contact-*.csv"))
     if not files:
-        sys.exit("no contact-*.csv: set Output/Write csv tables = true")
+        sys.exit("no contact-*.csv: set Postprocess/Visualization/Write csv tables = true")
     with open(files[-1]) as f:
         rows = list(csv.DictReader(f))
     worst, count = 0.0, 0

@@ -3,7 +3,7 @@
 a thick-walled sphere, tests/lame_*.prm: the shell geometry under an
 internal pressure, outer surface free) with the exact solution. Reads the
 run's parameters.prm and its last displacement-NNNNN.csv and
-stress-NNNNN.csv (Output/Write csv tables = true).
+stress-NNNNN.csv (Postprocess/Visualization/Write csv tables = true).
 
 usage: check_lame.py OUTPUT_DIR [--tolerance 0.01]
 
@@ -32,7 +32,7 @@ from check_analytic import read_parameters  # noqa: E402
 def last(directory, prefix):
     files = sorted(glob.glob(f"{directory}/{prefix}-*.csv"))
     if not files:
-        sys.exit(f"no {prefix}-*.csv in {directory}: set Output/Write csv tables = true")
+        sys.exit(f"no {prefix}-*.csv in {directory}: set Postprocess/Visualization/Write csv tables = true")
     with open(files[-1]) as f:
         return list(csv.DictReader(f))
 

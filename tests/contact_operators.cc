@@ -61,7 +61,8 @@ namespace
   example(const std::string &file, const std::string &extra)
   {
     return "include " SOURCE_DIR "/../parameters/" + file +
-           "\nsubsection Output\n set Write vtu = false\n set Write "
+           "\nsubsection Postprocess\n subsection Visualization\n  set Write "
+           "vtu = false\n end\nend\nsubsection Output\n set Write "
            "statistics = false\nend\n" +
            extra;
   }

@@ -59,13 +59,13 @@ fclib_expect_error(evaluate_without_solution 1 "has no solution"
   --fclib ${_small} --evaluate ${_small})
 fclib_expect_error(solution_without_fclib 1 "go with --fclib"
   --solution out.hdf5 ${_primal_dual})
-fclib_expect_error(bad_export_list 1 "Output/FCLIB export"
+fclib_expect_error(bad_export_list 1 "Postprocess/FCLIB export/Increments"
   --fclib-export first ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
 fclib_expect_error(not_symmetric 1 "M that is not symmetric.*Kanno's method needs M symmetric positive definite: use <Contact solver/Method> = semismooth Newton"
   --fclib ${_data}/CubeH8.hdf5 ${_primal_dual})
 fclib_expect_error(empty_global_group 1 "has an incomplete global problem: fclib_global/spacedim is missing"
   --fclib ${_data}/empty_global_group.hdf5)
-fclib_expect_error(export_past_the_end 1 "<Output/FCLIB export> = '5' is not valid: increment 5 is past the last increment of the loading history \\(1\\)"
+fclib_expect_error(export_past_the_end 1 "<Postprocess/FCLIB export/Increments> = '5' is not valid: increment 5 is past the last increment of the loading history \\(1\\)"
   --fclib-export 5 ${PROJECT_SOURCE_DIR}/parameters/example1.prm)
 
 # FCLIB problems from outside the project (tests/fclib/data/README.md),

@@ -21,9 +21,13 @@ subsection Contact solver
     set Maximum iterations = 10
   end
 end
-subsection Output
-  set FCLIB export = 1
-  set Write vtu = false
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+  end
+  subsection FCLIB export
+    set Increments = 1
+  end
 end
 EOT
 rm -rf output-failed

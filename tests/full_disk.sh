@@ -20,8 +20,10 @@ scene() {
   cat <<EOT
 include $source_dir/parameters/press_and_drag.prm
 set Output directory = $1
-subsection Output
-  set Write csv tables = true
+subsection Postprocess
+  subsection Visualization
+    set Write csv tables = true
+  end
 end
 EOT
 }
@@ -54,8 +56,12 @@ cat > results.prm <<EOT
 include $source_dir/parameters/press_and_drag.prm
 set Output directory = disk/out
 subsection Output
-  set Write vtu every = 1
   set Checkpoint every = 100
+end
+subsection Postprocess
+  subsection Visualization
+    set Write vtu every = 1
+  end
 end
 EOT
 for ranks in 1 2; do

@@ -14,9 +14,11 @@ for name in whole killed; do
   cat > $name.prm <<EOT
 include $source_dir/parameters/press_and_drag.prm
 set Output directory = out-$name
-subsection Output
-  set Write vtu every = 5
-  set Write csv tables = true
+subsection Postprocess
+  subsection Visualization
+    set Write vtu every = 5
+    set Write csv tables = true
+  end
 end
 EOT
 done

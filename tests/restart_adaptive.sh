@@ -22,18 +22,18 @@ for name in whole killed; do
   cat > $name.prm <<EOT
 include $source_dir/parameters/cattaneo_3d.prm
 set Output directory = out-$name
-subsection Geometry
+subsection Mesh refinement
   set Local refinements = 2
   set Refinement radius = 0.3
-end
-subsection Mesh refinement
   set Strategy = kelly and contact state
   set Refine fraction = 0.1
   set Cycles = 1
 end
-subsection Output
-  set Write vtu = false
-  set Write csv tables = true
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+    set Write csv tables = true
+  end
 end
 EOT
 done

@@ -36,8 +36,10 @@ subsection Contact solver
     set Primal step tolerance = 1e-6
   end
 end
-subsection Output
-  set Write vtu = false
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+  end
 end
 EOT
 }

@@ -105,8 +105,9 @@ namespace
     return "include " SOURCE_DIR "/../parameters/example2.prm\n"
            "subsection Geometry\n subsection Box\n  set X repetitions = " +
            n_x + "\n  set Y repetitions = " + n + "\n  set Z repetitions = " +
-           n + "\n end\nend\nsubsection Output\n set Write vtu = false\n"
-           " set Write statistics = false\nend\n";
+           n + "\n end\nend\nsubsection Postprocess\n subsection "
+           "Visualization\n  set Write vtu = false\n end\nend\n"
+           "subsection Output\n set Write statistics = false\nend\n";
   }
 
   /// Prints the checks above for example II at @p n_y.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -167,9 +168,79 @@ namespace FrictionalContact
 
 
 
+  namespace
+  {
+    /// Entries that moved, old path -> new path, so that a file written for
+    /// an earlier release gets one line naming the new place instead of
+    /// deal.II's "no entry with that name".
+    const std::map<std::string, std::string> moved_entries = {
+      {"Geometry/Global refinements", "Mesh refinement/Global refinements"},
+      {"Geometry/Local refinements", "Mesh refinement/Local refinements"},
+      {"Geometry/Refinement center", "Mesh refinement/Refinement center"},
+      {"Geometry/Refinement radius", "Mesh refinement/Refinement radius"},
+      {"Output/Postprocessors", "Postprocess/List of postprocessors"},
+      {"Output/Write vtu", "Postprocess/Visualization/Write vtu"},
+      {"Output/Write vtu every", "Postprocess/Visualization/Write vtu every"},
+      {"Output/Write csv tables", "Postprocess/Visualization/Write csv tables"},
+      {"Output/Number of grouped files",
+       "Postprocess/Visualization/Number of grouped files"},
+      {"Output/Write convergence history",
+       "Postprocess/Convergence history/Write convergence history"},
+      {"Output/FCLIB export", "Postprocess/FCLIB export/Increments"}};
+  } // namespace
+
+
+
+  void
+  ParameterFile::check_moved_entries() const
+  {
+    static const std::regex subsection(R"(^\s*subsection\s+(.*?)\s*$)");
+    static const std::regex end(R"(^\s*end\s*$)");
+    static const std::regex set(R"(^\s*set\s+(.*?)\s*=.*$)");
+    std::vector<std::string> path;
+    std::istringstream       lines(text);
+    std::string              line;
+    for (unsigned int number = 0; std::getline(lines, line); ++number)
+      {
+        line = line.substr(0, line.find('#'));
+        std::smatch match;
+        if (std::regex_match(line, match, subsection))
+          path.push_back(match[1]);
+        else if (std::regex_match(line, end) && !path.empty())
+          path.pop_back();
+        else if (std::regex_match(line, match, set))
+          {
+            std::string name;
+            for (const std::string &section : path)
+              name += section + '/';
+            name += match[1].str();
+            const auto moved = moved_entries.find(name);
+            if (moved != moved_entries.end())
+              {
+                const std::string &now = moved->second;
+                std::string        sections;
+                for (const std::string &section :
+                     Input::split(now.substr(0, now.rfind('/')), '/'))
+                  sections += (sections.empty() ? "'subsection " :
+                                                  ", 'subsection ") +
+                              section + "'";
+                throw InputError(
+                  "<" + name + "> (line " +
+                  std::to_string(origin[number].second) + " of '" +
+                  origin[number].first + "') is now <" + now +
+                  ">: set '" + now.substr(now.rfind('/') + 1) + "' inside " +
+                  sections + " instead");
+              }
+          }
+      }
+  }
+
+
+
   void
   ParameterFile::parse(ParameterHandler &prm, const bool skip_undefined) const
   {
+    check_moved_entries();
     std::istringstream in(text);
     try
       {

@@ -75,7 +75,9 @@ namespace FrictionalContact
     changes_result(const std::string &key)
     {
       return key != "Output directory" && key != "Resume computation" &&
-             key.rfind("Output/", 0) != 0 && key != "Contact solver/Report every";
+             key.rfind("Output/", 0) != 0 &&
+             key.rfind("Postprocess/", 0) != 0 &&
+             key != "Contact solver/Report every";
     }
 
     /// Empty if the checkpoint in @p directory is intact and of @p scene,

@@ -171,7 +171,7 @@ namespace FrictionalContact
   void
   FclibExport<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("FCLIB export",
+    prm.declare_entry("Increments",
                       "",
                       Patterns::Anything(),
                       "Increments (counted from 1, comma-separated, or "
@@ -191,7 +191,7 @@ namespace FrictionalContact
                                      const MPI_Comm)
   {
     directory = output_directory;
-    text      = prm.get("FCLIB export");
+    text      = prm.get("Increments");
     for (const std::string &item : Input::split(text, ','))
       if (item == "all")
         all = true;
@@ -208,7 +208,7 @@ namespace FrictionalContact
               end = 0;
             }
           if (end != item.size() || number < 1)
-            Input::fail("Output/FCLIB export",
+            Input::fail("Postprocess/FCLIB export/Increments",
                         text,
                         "increment numbers from 1, separated by commas, or "
                         "'all'");
@@ -223,7 +223,7 @@ namespace FrictionalContact
   FclibExport<dim>::check_increments(const unsigned int n_increments) const
   {
     if (!increments.empty() && *increments.rbegin() > n_increments)
-      Input::fail("Output/FCLIB export",
+      Input::fail("Postprocess/FCLIB export/Increments",
                   text,
                   "increment " + std::to_string(*increments.rbegin()) +
                     " is past the last increment of the loading history (" +

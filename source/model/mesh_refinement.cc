@@ -45,12 +45,12 @@ namespace FrictionalContact
   MeshRefinement<dim>::MeshRefinement(ParameterHandler &prm)
     : global_refinements(prm.get_integer("Global refinements"))
     , local_refinements(prm.get_integer("Local refinements"))
-    , local_center(Input::parse_vector<dim>("Geometry/Refinement center",
+    , local_center(Input::parse_vector<dim>("Mesh refinement/Refinement center",
                                             prm.get("Refinement center")))
     , local_radius(prm.get_double("Refinement radius"))
   {
     if (local_refinements > 0 && !(local_radius > 0))
-      Input::fail("Geometry/Refinement radius",
+      Input::fail("Mesh refinement/Refinement radius",
                   prm.get("Refinement radius"),
                   "Local refinements > 0 needs a positive radius");
   }
@@ -101,7 +101,8 @@ namespace FrictionalContact
                        Input::to_text(100 * largest_share) + " % of the " +
                        Input::to_text(available / 1e9) +
                        " GB available; use fewer cells (repetitions, "
-                       "Global refinements, Local refinements)");
+                       "<Mesh refinement/Global refinements>, <Local "
+                       "refinements>)");
   }
 
 

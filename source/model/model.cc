@@ -35,6 +35,8 @@ namespace FrictionalContact
     prm.enter_subsection("Geometry");
     PluginRegistry<Geometry::Interface<dim>>::declare_parameters(
       prm, "box", "The shape of the elastic body and its boundary names.");
+    prm.leave_subsection();
+    prm.enter_subsection("Mesh refinement");
     MeshRefinement<dim>::declare_parameters(prm);
     prm.leave_subsection();
 
@@ -50,7 +52,9 @@ namespace FrictionalContact
     : triangulation(comm)
   {
     prm.enter_subsection("Geometry");
-    geometry   = PluginRegistry<Geometry::Interface<dim>>::create(prm);
+    geometry = PluginRegistry<Geometry::Interface<dim>>::create(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Mesh refinement");
     refinement = std::make_unique<MeshRefinement<dim>>(prm);
     prm.leave_subsection();
 
@@ -146,7 +150,7 @@ namespace FrictionalContact
         " cells, too few for " +
         std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
         " MPI ranks (a rank would own no unknowns): run on fewer ranks, or "
-        "use a finer mesh (repetitions, <Geometry/Global refinements>)");
+        "use a finer mesh (repetitions, <Mesh refinement/Global refinements>)");
     if (contact->active())
       contact->setup(*body, boundary_names);
   }

@@ -33,13 +33,18 @@ namespace FrictionalContact
       std::string names;
       for (const std::string &name : Registry::names())
         names += (names.empty() ? "" : "|") + name;
-      prm.enter_subsection("Output");
-      prm.declare_entry("Postprocessors",
+      prm.enter_subsection("Postprocess");
+      prm.declare_entry("List of postprocessors",
                         default_postprocessors,
                         Patterns::MultipleSelection(names),
                         "What runs after each increment, in this order (the "
                         "order of their columns in the statistics file). "
-                        "Each writes only what its entries below ask for.");
+                        "Each writes only what the entries of its "
+                        "subsection ask for.");
+      Registry::declare_subsections(prm);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
       prm.declare_entry("Write statistics",
                         "true",
                         Patterns::Bool(),
@@ -51,7 +56,6 @@ namespace FrictionalContact
                         "With more than one increment, save the state for "
                         "<Resume computation> after every n-th increment and "
                         "the last one (0: never).");
-      Registry::declare_all_here(prm);
       prm.leave_subsection();
     }
 
@@ -64,15 +68,19 @@ namespace FrictionalContact
       : statistics_file(output_directory + "/statistics")
       , comm(comm)
     {
+      using Registry = PluginRegistry<Interface<dim>>;
       prm.enter_subsection("Output");
       write_statistics = prm.get_bool("Write statistics");
       checkpoint_every = prm.get_integer("Checkpoint every");
+      prm.leave_subsection();
+      prm.enter_subsection("Postprocess");
       for (const std::string &name :
-           Input::split(prm.get("Postprocessors"), ','))
+           Input::split(prm.get("List of postprocessors"), ','))
         {
-          postprocessors.push_back(
-            PluginRegistry<Interface<dim>>::create_unparsed(name));
+          postprocessors.push_back(Registry::create_unparsed(name));
+          prm.enter_subsection(Registry::subsection_name(name));
           postprocessors.back()->parse_parameters(prm, output_directory, comm);
+          prm.leave_subsection();
         }
       prm.leave_subsection();
     }
@@ -224,7 +232,7 @@ namespace FrictionalContact
       archive >> table >> states;
       if (states.size() != postprocessors.size())
         throw InputError("<Resume computation>: the checkpoint was written "
-                         "with other <Output/Postprocessors>");
+                         "with another <Postprocess/List of postprocessors>");
       for (unsigned int i = 0; i < states.size(); ++i)
         postprocessors[i]->load_state(states[i]);
     }

@@ -35,6 +35,11 @@ namespace FrictionalContact
     parse(ParameterHandler &prm, const bool skip_undefined = false) const;
 
   private:
+    /// Throws an InputError naming the new place of an entry that moved
+    /// (such as Geometry/Global refinements), if the text sets one.
+    void
+    check_moved_entries() const;
+
     void
     expand(const std::string &file_name, std::vector<std::string> &including);
 

@@ -90,13 +90,18 @@ namespace FrictionalContact
       return list;
     }
 
-    /// Declares the parameters of every plugin in the subsection the
-    /// caller has entered (for families whose entries share one).
+    /// Declares the parameters of every plugin in a subsection named like
+    /// it, inside the subsection the caller has entered (for families
+    /// whose plugins are picked by a list, not by a selector entry).
     static void
-    declare_all_here(ParameterHandler &prm)
+    declare_subsections(ParameterHandler &prm)
     {
-      for (const auto &entry : plugins())
-        entry.second.declare_parameters(prm);
+      for (const auto &[name, plugin] : plugins())
+        {
+          prm.enter_subsection(subsection_name(name));
+          plugin.declare_parameters(prm);
+          prm.leave_subsection();
+        }
     }
 
     /// Creates the plugin @p name; the caller lets it parse its entries.
@@ -106,10 +111,13 @@ namespace FrictionalContact
       return plugins().at(name).create();
     }
 
-    /// "box" -> "Box", "from file" -> "From file".
+    /// "box" -> "Box", "from file" -> "From file", "fclib export" ->
+    /// "FCLIB export".
     static std::string
     subsection_name(std::string name)
     {
+      if (name.rfind("fclib", 0) == 0)
+        name.replace(0, 5, "FCLIB");
       if (!name.empty())
         name[0] = static_cast<char>(std::toupper(name[0]));
       return name;

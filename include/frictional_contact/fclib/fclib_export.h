@@ -44,7 +44,7 @@ namespace FrictionalContact
    * Writes the incremental problems of chosen increments to FCLIB files,
    * `<Output directory>/fclib-NNNNN.hdf5`, with the solution when the solve
    * converged (an increment that fails is written too, without it): the
-   * postprocessor "fclib export", reading the entry "FCLIB export".
+   * postprocessor "fclib export", reading the entry "Increments" of its subsection "FCLIB export".
    */
   template <int dim>
   class FclibExport : public Postprocess::Interface<dim>

@@ -11,18 +11,20 @@ namespace FrictionalContact
   /**
    * The refinement of the geometry's coarse mesh: global refinements, then
    * local ones near a centre (hanging nodes between the levels). Owns the
-   * refinement entries of "Geometry" and the memory check that refuses a
+   * initial-refinement entries of "Mesh refinement" (AdaptiveRefinement
+   * owns the adaptive ones) and the memory check that refuses a
    * mesh this machine cannot hold before it is made.
    */
   template <int dim>
   class MeshRefinement
   {
   public:
-    /// Declares the refinement entries, inside the subsection "Geometry".
+    /// Declares the refinement entries, inside the subsection "Mesh
+    /// refinement".
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads them, inside the subsection "Geometry".
+    /// Reads them, inside the subsection "Mesh refinement".
     explicit MeshRefinement(ParameterHandler &prm);
 
     /// Refines @p mesh globally (after @p built_in_refinements the geometry

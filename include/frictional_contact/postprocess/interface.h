@@ -54,8 +54,10 @@ namespace FrictionalContact
      * writes what it is for and returns its columns of the statistics
      * file. Postprocessors register themselves with
      * FRICTIONAL_CONTACT_REGISTER_PLUGIN(Postprocess::Interface, ...) and
-     * run in the order of <Output/Postprocessors>; their entries are
-     * declared in the subsection "Output" itself.
+     * run in the order of <Postprocess/List of postprocessors>; each
+     * declares its entries in its own subsection of "Postprocess", named
+     * like it ("visualization": "Postprocess/Visualization"), as ASPECT's
+     * do.
      */
     template <int dim>
     class Interface
@@ -63,12 +65,12 @@ namespace FrictionalContact
     public:
       virtual ~Interface() = default;
 
-      /// Declares its entries (inside "Output"); none by default.
+      /// Declares its entries (inside its subsection); none by default.
       static void
       declare_parameters(ParameterHandler &)
       {}
 
-      /// Reads its entries (inside "Output"); @p directory is where it
+      /// Reads its entries (inside its subsection); @p directory is where it
       /// writes. Nothing by default.
       virtual void
       parse_parameters(ParameterHandler & /*prm*/,
