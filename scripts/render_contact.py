@@ -18,7 +18,9 @@ limit and cannot wait forever for the display.)
 OUTPUT_DIR is a run's <Output directory> (solution.pvd, parameters.prm).
 Options:
   --out DIR          where the PNG files go (default OUTPUT_DIR/figures)
-  --times WHICH      last (default), all, or a comma-separated list of times
+  --times WHICH      contact (default: the time with the most vertices in
+                     contact, the latest of equals), last, all, or a
+                     comma-separated list of times
   --warp FACTOR      scale of the displacement (default 1: true positions,
                      consistent with the obstacle)
   --size WxH         image size in pixels (default 1800x600)
@@ -40,7 +42,7 @@ def parse_arguments():
         formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
     parser.add_argument("output_directory")
     parser.add_argument("--out")
-    parser.add_argument("--times", default="last")
+    parser.add_argument("--times", default="contact")
     parser.add_argument("--warp", type=float, default=1.0)
     parser.add_argument("--size", default="1800x600")
     parser.add_argument("--name")
@@ -146,8 +148,31 @@ def obstacle_source(simple, entries, dim, t, bounds):
     return None
 
 
-def times_to_render(reader, which):
+def merged_by_body(simple, reader):
+    """The reader's cells with coincident vertices merged within each body
+    (the point field 'body'), not across bodies: each body is moved by
+    1e-9 of the scene's size times its number before the merge."""
+    reader.UpdatePipeline()
+    if "body" not in reader.PointData.keys():
+        return simple.CleantoGrid(Input=reader)
+    bounds = reader.GetDataInformation().GetBounds()
+    size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    apart = simple.Calculator(Input=reader, ResultArrayName="apart",
+                              Function=f"coords + body * {1e-9 * size:.3e} * iHat",
+                              CoordinateResults=1)
+    return simple.CleantoGrid(Input=apart)
+
+
+def times_to_render(reader, which, touching):
     available = list(reader.TimestepValues) if reader.TimestepValues else [0.0]
+    if which == "contact":
+        # Not the last time by default: a history may end unloaded (the
+        # press-and-drag scene lifts its tool), with nothing to see.
+        def touching_points(t):
+            touching.UpdatePipeline(t)
+            return touching.GetDataInformation().GetNumberOfPoints()
+        counts = [(touching_points(t), t) for t in available]
+        return [max(counts)[1]]
     if which == "last":
         return [available[-1]]
     if which == "all":
@@ -181,8 +206,9 @@ def main():
     simple.LoadPalette("WhiteBackground")
     reader = simple.PVDReader(FileName=pvd)
     # deal.II writes the vertices of each cell separately: merge them, so
-    # that the surface is the body's boundary, not every cell's.
-    merged = simple.CleantoGrid(Input=reader)
+    # that the surface is the body's boundary, not every cell's; body by
+    # body, so that two bodies touching at a vertex stay two.
+    merged = merged_by_body(simple, reader)
     warped = simple.WarpByVector(Input=merged, Vectors=["POINTS", "displacement"],
                                  ScaleFactor=arguments.warp)
     # The boundary: faces in 3D, edges in 2D.
@@ -209,7 +235,8 @@ def main():
     views = []
     for cell in (1, 5, 6):
         view = simple.CreateView("RenderView")
-        view.OrientationAxesVisibility = 1
+        # No axes triad: it sat on the legends.
+        view.OrientationAxesVisibility = 0
         layout.AssignView(cell, view)
         views.append(view)
 
@@ -227,33 +254,59 @@ def main():
     simple.ColorBy(state, ("POINTS", "contact_state"))
     state_lut = simple.GetColorTransferFunction("contact_state")
     state_lut.InterpretValuesAsCategories = 1
-    state_lut.Annotations = ["0", "free", "1", "stick", "2", "slip"]
-    state_lut.IndexedColors = [0.7, 0.7, 0.7, 0.1, 0.4, 0.9, 0.9, 0.3, 0.1]
+    # -1: a vertex of the face that is not a candidate (a hanging vertex,
+    # one on a fixed boundary): drawn pale, and named in the legend.
+    state_lut.Annotations = ["-1", "not a candidate", "0", "free", "1", "stick",
+                             "2", "slip"]
+    state_lut.IndexedColors = [0.92, 0.92, 0.85, 0.7, 0.7, 0.7, 0.1, 0.4, 0.9,
+                               0.9, 0.3, 0.1]
     state.SetScalarBarVisibility(views[2], True)
     simple.GetScalarBar(state_lut, views[2]).Title = "contact state"
     if dim == 2:
+        # The contact boundary of a 2D body is a line: draw it thick.
         for display in (pressure, state):
-            display.LineWidth = 4
+            display.LineWidth = 12
+            display.RenderLinesAsTubes = 1
+    # Legends below the pictures, not over them.
+    for function, view in ((simple.GetColorTransferFunction("von_mises_stress"), views[0]),
+                           (simple.GetColorTransferFunction("contact_pressure"), views[1]),
+                           (state_lut, views[2])):
+        bar = simple.GetScalarBar(function, view)
+        bar.Orientation = "Horizontal"
+        bar.WindowLocation = "Lower Center"
+        bar.ScalarBarLength = 0.6
 
     obstacle_display, obstacle = None, None
     files = []
-    for t in times_to_render(reader, arguments.times):
+    chosen = times_to_render(reader, arguments.times, touching)
+    for t in chosen:
         for view in views:
             view.ViewTime = t
         warped.UpdatePipeline(t)
         bounds = warped.GetDataInformation().GetBounds()
         if obstacle is not None:
             simple.Delete(obstacle)
-        obstacle = obstacle_source(simple, entries, dim, t, bounds)
+        obstacle = obstacle_source(simple, entries, dim, t, bounds) \
+            if entries.get("Contact/Contact boundaries", "").strip() else None
         if obstacle is not None:
             obstacle_display = simple.Show(obstacle, views[0])
             obstacle_display.DiffuseColor = [0.45, 0.45, 0.45]
             obstacle_display.Opacity = 0.5 if dim == 3 else 1.0
         for display in (body, pressure):
             display.RescaleTransferFunctionToDataRange(False, True)
+        # Views 2 and 3: the zone in contact with a margin of half its size
+        # on each side (so that the free end of a pressed face shows),
+        # within the candidate face.
+        face.UpdatePipeline(t)
         touching.UpdatePipeline(t)
-        zone = touching.GetDataInformation().GetBounds() \
-            if touching.GetDataInformation().GetNumberOfCells() > 0 else bounds
+        zone = face.GetDataInformation().GetBounds() \
+            if face.GetDataInformation().GetNumberOfCells() > 0 else bounds
+        if touching.GetDataInformation().GetNumberOfCells() > 0:
+            inner = touching.GetDataInformation().GetBounds()
+            zone = [f(z, i + s * 0.5 * (inner[2 * k + 1] - inner[2 * k]))
+                    for k in range(3)
+                    for f, z, i, s in ((max, zone[2 * k], inner[2 * k], -1),
+                                       (min, zone[2 * k + 1], inner[2 * k + 1], 1))]
         for i, view in enumerate(views):
             view.InteractionMode = "2D" if dim == 2 else "3D"
             box = bounds if i == 0 else zone
@@ -275,13 +328,28 @@ def main():
                 # the shipped scenes, which press down).
                 view.CameraPosition = [centre[0], centre[1], box[4] - 10 * extent]
                 view.CameraViewUp = [0, 1, 0]
-            if i == 0:
+            if i == 0 and dim == 3:
                 simple.ResetCamera(view)
+                # Back off a little and lift the body above the legend.
+                camera = view.GetActiveCamera()
+                camera.Dolly(0.8)
+                focal = list(view.CameraFocalPoint)
+                position = list(view.CameraPosition)
+                view.CameraFocalPoint = [focal[0], focal[1], focal[2] - 0.15 * extent]
+                view.CameraPosition = [position[0], position[1],
+                                       position[2] - 0.15 * extent]
             else:
-                # Zoom on the zone in contact, with a margin.
+                # Fit the box, with a margin and room for the legend below:
+                # the panels are as wide as high.
                 view.CameraParallelProjection = 1
-                view.CameraParallelScale = 0.75 * extent
-        single = len(times_to_render(reader, arguments.times)) == 1
+                view.CameraParallelScale = 0.7 * extent
+                # Screen up is +y in these views: moving the focal point
+                # down moves the picture up, above the legend.
+                low = [centre[0], centre[1] - 0.12 * extent, centre[2]]
+                position = list(view.CameraPosition)
+                view.CameraFocalPoint = low
+                view.CameraPosition = [low[0], low[1], position[2]]
+        single = len(chosen) == 1
         file_name = os.path.join(out, f"{name}.png" if single else
                                  f"{name}-t{t:08.4f}.png")
         simple.SaveScreenshot(file_name, layout, ImageResolution=[width, height])
