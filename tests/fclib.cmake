@@ -97,6 +97,17 @@ foreach(_problem Box_Stacks-i0035-31-0 GFC3D_TwoRods1
   endforeach()
 endforeach()
 
+# The same with the solves with M by the Cholesky factorization.
+set(_name fclib/external/GFC3D_TwoRods1.cholesky)
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${_name})
+add_test(NAME ${_name}
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/fclib_external.py
+          $<TARGET_FILE:contact> ${_data}/GFC3D_TwoRods1.hdf5
+          ${_data}/GFC3D_TwoRods1.siconos.hdf5
+          --parameters ${CMAKE_CURRENT_SOURCE_DIR}/fclib/primal_dual_cholesky.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${_name})
+set_tests_properties(${_name} PROPERTIES ENVIRONMENT "${_environment}")
+
 # A failed increment is exported without its solution.
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/fclib/failed_export)
 add_test(NAME fclib/failed_export

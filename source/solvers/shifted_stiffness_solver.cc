@@ -88,8 +88,8 @@ namespace FrictionalContact
                       "has at most 12 times the nonzeros of K, else AMG; for "
                       "the elastic solves AMG. amg: always Trilinos ML. "
                       "jacobi: always the diagonal. cholesky: the "
-                      "factorization for the primal steps on one process "
-                      "(AMG on several), AMG for the elastic solves.");
+                      "factorization for every solve on one process (AMG "
+                      "on several).");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),
@@ -260,9 +260,10 @@ namespace FrictionalContact
   bool
   ShiftedStiffnessSolver::use_cholesky(const double sigma)
   {
-    if (sigma <= 0 || volumetric_split() != nullptr ||
-        !(preconditioner_choice == "auto" ||
-          preconditioner_choice == "cholesky") ||
+    // auto: for the primal steps only; cholesky: for every solve.
+    const bool wanted = preconditioner_choice == "cholesky" ||
+                        (preconditioner_choice == "auto" && sigma > 0);
+    if (!wanted || volumetric_split() != nullptr ||
         !ShiftedCholesky::applicable(*preconditioner_stiffness))
       return false;
     if (!cholesky.analyzed())
@@ -284,8 +285,9 @@ namespace FrictionalContact
   ShiftedStiffnessSolver::cholesky_for(const double sigma)
   {
     const double reference = cholesky.shift();
-    if (reference > 0 && sigma >= reference / refactorization_factor &&
-        sigma <= reference * refactorization_factor)
+    if (sigma == reference ||
+        (reference > 0 && sigma >= reference / refactorization_factor &&
+         sigma <= reference * refactorization_factor))
       return cholesky;
     const Timer timer;
     cholesky.factorize(sigma);

@@ -74,10 +74,11 @@ namespace FrictionalContact
     Outcome
     solve_by_newton() const;
 
-    /// Kanno's Algorithm 2 on our form of the problem, with mu_pi and
-    /// sigma_T computed.
+    /// The method's plugin on our form of the problem (Kanno's Algorithm 2,
+    /// or any other method but the semismooth Newton one), with mu_pi
+    /// computed if the method needs it and sigma_T.
     Outcome
-    solve_by_primal_dual();
+    solve_by_plugin();
 
     /// mu_pi: LAPACK up to 1000 unknowns, PARPACK above.
     double
