@@ -1,7 +1,9 @@
 #!/bin/bash
 # Renders every shipped scene (parameters/*.prm) to doc/figures/<scene>.png:
 # runs each scene with the built program in a scratch folder, then
-# scripts/render_contact.py on a virtual display (the last time of each run). A
+# scripts/render_contact.py on a virtual display (the time with the most
+# contact), and for 2D scenes scripts/plot_contact_profile.py
+# (doc/figures/<scene>-profile.png). A
 # ParaView state of each run (contact.pvsm) is saved in its output folder,
 # next to the data it names: open it in the GUI (File > Load State).
 #
@@ -14,7 +16,7 @@ out=$root/doc/figures
 scenes=()
 while [ $# -gt 0 ]; do
   case $1 in
-    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --build) build=$(cd "$2" && pwd); shift 2 ;;
     --out) mkdir -p "$2"; out=$(cd "$2" && pwd); shift 2 ;;
     *) scenes+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
@@ -29,6 +31,9 @@ for tool in pvbatch Xvfb; do
     exit 1
   }
 done
+# A Python with matplotlib for the profile plots (Debian's, by default).
+python=python3
+"$python" -c "import matplotlib" 2> /dev/null || python=/usr/bin/python3
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 scratch=$(mktemp -d /tmp/gallery-XXXXXX)
 mkdir -p "$out"
@@ -36,10 +41,19 @@ for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .prm)
   mkdir -p "$scratch/$name"
   echo "== $name"
-  (cd "$scratch/$name" && "$build/contact" "$scene" > run.log 2>&1) || { echo "the run failed: $scratch/$name/run.log" >&2; exit 1; }
+  # The scene as shipped, with its CSV tables for the 2D profile plot.
+  printf 'include %s\nsubsection Postprocess\n subsection Visualization\n  set Write csv tables = true\n end\nend\n' "$scene" > "$scratch/$name/scene.prm"
+  (cd "$scratch/$name" && "$build/contact" scene.prm > run.log 2>&1) || { echo "the run failed: $scratch/$name/run.log" >&2; exit 1; }
   directory=$(dirname "$(find "$scratch/$name" -name solution.pvd | head -1)")
   "$root/scripts/headless.sh" pvbatch --no-mpi "$root/scripts/render_contact.py" "$directory" \
     --out "$out" --name "$name" --state "$directory/contact.pvsm" 2>&1 | grep '^wrote' || {
       echo "rendering $name failed" >&2; exit 1; }
+  # 2D: the pressure and traction along the contact boundary as a plot.
+  if grep -q "^ *set Dimension *= *2" "$directory/parameters.prm" \
+      && ls "$directory"/contact-*.csv > /dev/null 2>&1; then
+    "$python" "$root/scripts/plot_contact_profile.py" "$directory" \
+      --out "$out/$name-profile.png" | grep '^wrote' || {
+        echo "the profile plot of $name failed" >&2; exit 1; }
+  fi
 done
 echo "pictures in $out (runs in $scratch)"
