@@ -324,5 +324,6 @@ namespace FrictionalContact
     Postprocess::Interface,
     FclibExport,
     "fclib export",
-    "FCLIB files (fclib-NNNNN.hdf5) of the increments named in FCLIB export.")
+    "FCLIB files (fclib-NNNNN.hdf5) of the increments named in its entry "
+    "Increments.")
 } // namespace FrictionalContact

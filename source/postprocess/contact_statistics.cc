@@ -10,6 +10,12 @@ namespace FrictionalContact
     class ContactStatistics : public Interface<dim>
     {
     public:
+      unsigned int
+      default_position() const override
+      {
+        return 2;
+      }
+
       Columns
       execute(const IncrementResult<dim> &result) override
       {

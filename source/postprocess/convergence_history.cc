@@ -14,6 +14,12 @@ namespace FrictionalContact
     class ConvergenceHistory : public Interface<dim>
     {
     public:
+      unsigned int
+      default_position() const override
+      {
+        return 5;
+      }
+
       static void
       declare_parameters(ParameterHandler &prm)
       {

@@ -10,6 +10,12 @@ namespace FrictionalContact
     class DisplacementStatistics : public Interface<dim>
     {
     public:
+      unsigned int
+      default_position() const override
+      {
+        return 3;
+      }
+
       Columns
       execute(const IncrementResult<dim> &result) override
       {

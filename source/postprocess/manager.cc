@@ -9,6 +9,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 namespace FrictionalContact
@@ -17,10 +18,25 @@ namespace FrictionalContact
   {
     namespace
     {
-      /// The order of the statistics columns.
-      const char *const default_postprocessors =
-        "solver statistics, contact statistics, displacement statistics, "
-        "visualization, convergence history, fclib export";
+      /// The postprocessors that place themselves in the default list, in
+      /// their order.
+      template <int dim>
+      std::string
+      default_postprocessors()
+      {
+        using Registry = PluginRegistry<Interface<dim>>;
+        std::vector<std::pair<unsigned int, std::string>> placed;
+        for (const std::string &name : Registry::names())
+          if (const unsigned int position =
+                Registry::create_unparsed(name)->default_position();
+              position > 0)
+            placed.emplace_back(position, name);
+        std::sort(placed.begin(), placed.end());
+        std::string list;
+        for (const auto &entry : placed)
+          list += (list.empty() ? "" : ", ") + entry.second;
+        return list;
+      }
     } // namespace
 
 
@@ -35,7 +51,7 @@ namespace FrictionalContact
         names += (names.empty() ? "" : "|") + name;
       prm.enter_subsection("Postprocess");
       prm.declare_entry("List of postprocessors",
-                        default_postprocessors,
+                        default_postprocessors<dim>(),
                         Patterns::MultipleSelection(names),
                         "What runs after each increment, in this order (the "
                         "order of their columns in the statistics file). "

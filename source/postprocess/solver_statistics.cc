@@ -11,6 +11,12 @@ namespace FrictionalContact
     class SolverStatistics : public Interface<dim>
     {
     public:
+      unsigned int
+      default_position() const override
+      {
+        return 1;
+      }
+
       Columns
       execute(const IncrementResult<dim> &result) override
       {

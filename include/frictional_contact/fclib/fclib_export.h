@@ -50,6 +50,12 @@ namespace FrictionalContact
   class FclibExport : public Postprocess::Interface<dim>
   {
   public:
+    unsigned int
+    default_position() const override
+    {
+      return 6;
+    }
+
     static void
     declare_parameters(ParameterHandler &prm);
 

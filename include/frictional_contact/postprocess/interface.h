@@ -65,6 +65,12 @@ namespace FrictionalContact
     public:
       virtual ~Interface() = default;
 
+      /// Where it stands in the default <Postprocess/List of
+      /// postprocessors> (which orders the statistics columns), counted
+      /// from 1; 0: not in the default list.
+      virtual unsigned int
+      default_position() const = 0;
+
       /// Declares its entries (inside its subsection); none by default.
       static void
       declare_parameters(ParameterHandler &)

@@ -23,6 +23,12 @@ namespace FrictionalContact
   class OutputWriter : public Postprocess::Interface<dim>
   {
   public:
+    unsigned int
+    default_position() const override
+    {
+      return 4;
+    }
+
     using Vector = TrilinosWrappers::MPI::Vector;
 
     /// Declares its entries, inside the subsection "Output".
