@@ -46,12 +46,16 @@ namespace FrictionalContact
     [[noreturn]] void
     fail(const std::string &what, const int status)
     {
+      std::string cause;
+      if (status == CHOLMOD_OUT_OF_MEMORY)
+        cause = " (out of memory): set <Linear solver/Preconditioner> = "
+                "jacobi or amg";
+      else if (status == CHOLMOD_NOT_POSDEF)
+        cause = " (the matrix is not positive definite: is every body "
+                "held against rigid motion?)";
       throw SolverError("the sparse Cholesky factorization (CHOLMOD) " + what +
                         " failed with status " + std::to_string(status) +
-                        (status == CHOLMOD_OUT_OF_MEMORY ?
-                           " (out of memory): set <Linear solver/Shifted "
-                           "preconditioner> = amg" :
-                           std::string()));
+                        cause);
     }
   } // namespace
 
