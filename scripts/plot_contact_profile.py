@@ -43,15 +43,20 @@ def chosen_file(directory, increment):
     return max(files, key=lambda p: (sum(r["state"] != "free" for r in read_rows(p)), p))
 
 
-def hertz_curve(directory, rows):
-    """(x, p) of Hertz's pressure for the run's normal force, or None where
-    the scene is not a half disc."""
+def read_scene(directory):
+    """The run's scene as tests/check_analytic.py reads it (materials,
+    friction, half-disc geometry), or None if it cannot."""
     try:
         import check_analytic
-        scene = check_analytic.Scene(directory)
+        return check_analytic.Scene(directory)
     except Exception:
         return None
-    if scene.dim != 2 or math.isnan(scene.radius) or math.isnan(scene.E_star):
+
+
+def hertz_curve(scene, rows):
+    """(x, p) of Hertz's pressure for the run's normal force, or None where
+    the scene is not a half disc."""
+    if scene is None or scene.dim != 2 or math.isnan(scene.radius) or math.isnan(scene.E_star):
         return None
     # The normal force of this increment: the sum of the nodal reactions,
     # doubled for the symmetry plane.
@@ -86,11 +91,8 @@ def main():
     if "rt2" in rows[0]:
         sys.exit("a 3D run: this plot is for 2D contact boundaries "
                  "(render 3D runs with scripts/render_contact.py)")
-    try:
-        import check_analytic
-        mu = check_analytic.Scene(directory).mu
-    except Exception:
-        mu = float("nan")
+    scene = read_scene(directory)
+    mu = scene.mu if scene is not None else float("nan")
     x = [float(r["x"]) for r in rows]
     pressure = [float(r["pressure"]) for r in rows]
     traction = [abs(float(r["rt1"])) / float(r["area"]) if float(r["area"]) > 0 else 0.0
@@ -102,7 +104,7 @@ def main():
     if mu > 0:
         axis.plot(x, [mu * p for p in pressure], ":", color="tab:blue",
                   label=f"mu x pressure (mu = {mu:g})")
-    curve = hertz_curve(directory, rows)
+    curve = hertz_curve(scene, rows)
     if curve:
         axis.plot(*curve, "--", color="black", lw=1, label="Hertz")
     for state, marker, colour in (("stick", "o", "tab:blue"), ("slip", "s", "tab:orange")):

@@ -191,47 +191,55 @@ namespace FrictionalContact
 
 
 
+  std::vector<ParameterEntry>
+  parameter_entries(std::istream &text)
+  {
+    std::vector<ParameterEntry> result;
+    std::vector<std::string>    path;
+    std::string                 line;
+    for (unsigned int number = 0; std::getline(text, line); ++number)
+      {
+        line = Input::trim(line.substr(0, line.find('#')));
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(Input::trim(line.substr(11)));
+        else if (line == "end" && !path.empty())
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0 && line.find('=') != std::string::npos)
+          {
+            const auto  equals = line.find('=');
+            std::string key;
+            for (const auto &section : path)
+              key += section + "/";
+            key += Input::trim(line.substr(4, equals - 4));
+            result.push_back(
+              {key, Input::trim(line.substr(equals + 1)), number});
+          }
+      }
+    return result;
+  }
+
+
+
   void
   ParameterFile::check_moved_entries() const
   {
-    static const std::regex subsection(R"(^\s*subsection\s+(.*?)\s*$)");
-    static const std::regex end(R"(^\s*end\s*$)");
-    static const std::regex set(R"(^\s*set\s+(.*?)\s*=.*$)");
-    std::vector<std::string> path;
-    std::istringstream       lines(text);
-    std::string              line;
-    for (unsigned int number = 0; std::getline(lines, line); ++number)
+    std::istringstream lines(text);
+    for (const ParameterEntry &entry : parameter_entries(lines))
       {
-        line = line.substr(0, line.find('#'));
-        std::smatch match;
-        if (std::regex_match(line, match, subsection))
-          path.push_back(match[1]);
-        else if (std::regex_match(line, end) && !path.empty())
-          path.pop_back();
-        else if (std::regex_match(line, match, set))
-          {
-            std::string name;
-            for (const std::string &section : path)
-              name += section + '/';
-            name += match[1].str();
-            const auto moved = moved_entries.find(name);
-            if (moved != moved_entries.end())
-              {
-                const std::string &now = moved->second;
-                std::string        sections;
-                for (const std::string &section :
-                     Input::split(now.substr(0, now.rfind('/')), '/'))
-                  sections += (sections.empty() ? "'subsection " :
-                                                  ", 'subsection ") +
-                              section + "'";
-                throw InputError(
-                  "<" + name + "> (line " +
-                  std::to_string(origin[number].second) + " of '" +
-                  origin[number].first + "') is now <" + now +
-                  ">: set '" + now.substr(now.rfind('/') + 1) + "' inside " +
-                  sections + " instead");
-              }
-          }
+        const auto moved = moved_entries.find(entry.path);
+        if (moved == moved_entries.end())
+          continue;
+        const std::string &now = moved->second;
+        std::string        sections;
+        for (const std::string &section :
+             Input::split(now.substr(0, now.rfind('/')), '/'))
+          sections +=
+            (sections.empty() ? "'subsection " : ", 'subsection ") + section + "'";
+        throw InputError("<" + entry.path + "> (line " +
+                         std::to_string(origin[entry.line].second) + " of '" +
+                         origin[entry.line].first + "') is now <" + now +
+                         ">: set '" + now.substr(now.rfind('/') + 1) +
+                         "' inside " + sections + " instead");
       }
   }
 

@@ -4,6 +4,7 @@
 #include <frictional_contact/driver/checkpoint.h>
 #include <frictional_contact/base/files.h>
 #include <frictional_contact/base/input.h>
+#include <frictional_contact/base/parameter_file.h>
 
 #include <boost/crc.hpp>
 
@@ -47,25 +48,8 @@ namespace FrictionalContact
     entries(std::istream &prm)
     {
       std::map<std::string, std::string> result;
-      std::vector<std::string>           path;
-      std::string                        line;
-      while (std::getline(prm, line))
-        {
-          line = Input::trim(line);
-          if (line.rfind("subsection ", 0) == 0)
-            path.push_back(Input::trim(line.substr(11)));
-          else if (line == "end" && !path.empty())
-            path.pop_back();
-          else if (line.rfind("set ", 0) == 0 && line.find('=') != std::string::npos)
-            {
-              const auto  equals = line.find('=');
-              std::string key;
-              for (const auto &p : path)
-                key += p + "/";
-              key += Input::trim(line.substr(4, equals - 4));
-              result[key] = Input::trim(line.substr(equals + 1));
-            }
-        }
+      for (const ParameterEntry &entry : parameter_entries(prm))
+        result[entry.path] = entry.value;
       return result;
     }
 

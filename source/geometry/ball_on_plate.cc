@@ -1,9 +1,9 @@
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/geometry/ball_on_plate.h>
+#include <frictional_contact/geometry/mesh_parts.h>
 #include <frictional_contact/geometry/half_ball.h>
 
 namespace FrictionalContact
@@ -107,46 +107,18 @@ namespace FrictionalContact
       Triangulation<dim> plate;
       GridGenerator::subdivided_hyper_rectangle(plate, plate_cells, low, high, true);
 
-      // Both in one list of cells: merging would join their vertices.
-      std::vector<Point<dim>>    vertices;
-      std::vector<CellData<dim>> cells;
-      SubCellData                faces;
-      for (Triangulation<dim> *part : {&plate, &ball})
+      // Side by side, their shared vertices kept apart (create_from_parts).
+      for (const auto &cell : ball.active_cell_iterators())
+        cell->set_material_id(1);
+      for (const auto &cell : plate.active_cell_iterators())
         {
-          const bool is_ball = part == &ball;
-          for (const auto &cell : part->active_cell_iterators())
-            {
-              cell->set_material_id(is_ball ? 1 : 0);
-              if (!is_ball)
-                for (const auto &face : cell->face_iterators())
-                  if (face->at_boundary())
-                    face->set_boundary_id(BallOnPlateFaces::first_plate_face +
-                                          face->boundary_id());
-            }
-          auto [part_vertices, part_cells, part_faces] =
-            GridTools::get_coarse_mesh_description(*part);
-          const unsigned int offset = vertices.size();
-          vertices.insert(vertices.end(), part_vertices.begin(), part_vertices.end());
-          for (CellData<dim> &cell : part_cells)
-            {
-              for (unsigned int &v : cell.vertices)
-                v += offset;
-              cells.push_back(cell);
-            }
-          for (CellData<1> &line : part_faces.boundary_lines)
-            {
-              for (unsigned int &v : line.vertices)
-                v += offset;
-              faces.boundary_lines.push_back(line);
-            }
-          for (CellData<2> &quad : part_faces.boundary_quads)
-            {
-              for (unsigned int &v : quad.vertices)
-                v += offset;
-              faces.boundary_quads.push_back(quad);
-            }
+          cell->set_material_id(0);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              face->set_boundary_id(BallOnPlateFaces::first_plate_face +
+                                    face->boundary_id());
         }
-      triangulation.create_triangulation(vertices, cells, faces);
+      create_from_parts(triangulation, {&plate, &ball});
       attach_half_ball_manifolds(triangulation, center);
     }
 

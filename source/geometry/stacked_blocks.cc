@@ -1,8 +1,8 @@
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <frictional_contact/base/plugins.h>
+#include <frictional_contact/geometry/mesh_parts.h>
 #include <frictional_contact/geometry/stacked_blocks.h>
 
 namespace FrictionalContact
@@ -94,11 +94,8 @@ namespace FrictionalContact
     StackedBlocks<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      // Each box on its own, then their cells in one list: merging the
-      // meshes would join the vertices they share at the interface.
-      std::vector<Point<dim>>   vertices;
-      std::vector<CellData<dim>> cells;
-      SubCellData               faces;
+      // Each box on its own, then side by side (create_from_parts).
+      Triangulation<dim> boxes[2];
       for (unsigned int k = 0; k < 2; ++k)
         {
           Point<dim> low;
@@ -107,40 +104,17 @@ namespace FrictionalContact
               low = Point<dim>(block_offset);
               low[dim - 1] += extents[0][dim - 1];
             }
-          Triangulation<dim> box;
           GridGenerator::subdivided_hyper_rectangle(
-            box, repetitions[k], low, low + extents[k], /*colorize=*/true);
-          for (const auto &cell : box.active_cell_iterators())
+            boxes[k], repetitions[k], low, low + extents[k], /*colorize=*/true);
+          for (const auto &cell : boxes[k].active_cell_iterators())
             {
               cell->set_material_id(k);
               for (const auto &face : cell->face_iterators())
                 if (face->at_boundary())
                   face->set_boundary_id(face->boundary_id() + k * 2 * dim);
             }
-          auto [box_vertices, box_cells, box_faces] =
-            GridTools::get_coarse_mesh_description(box);
-          const unsigned int offset = vertices.size();
-          vertices.insert(vertices.end(), box_vertices.begin(), box_vertices.end());
-          for (CellData<dim> &cell : box_cells)
-            {
-              for (unsigned int &v : cell.vertices)
-                v += offset;
-              cells.push_back(cell);
-            }
-          for (CellData<1> &line : box_faces.boundary_lines)
-            {
-              for (unsigned int &v : line.vertices)
-                v += offset;
-              faces.boundary_lines.push_back(line);
-            }
-          for (CellData<2> &quad : box_faces.boundary_quads)
-            {
-              for (unsigned int &v : quad.vertices)
-                v += offset;
-              faces.boundary_quads.push_back(quad);
-            }
         }
-      triangulation.create_triangulation(vertices, cells, faces);
+      create_from_parts(triangulation, {&boxes[0], &boxes[1]});
     }
 
 

@@ -191,9 +191,8 @@ namespace FrictionalContact
           previous_step = step;
         else
           {
-            scratch = step;
-            step.sadd(2., -1., previous_step);
-            previous_step = scratch;
+            previous_step.sadd(-1., 2., step);
+            step.swap(previous_step);
           }
         const unsigned int cg_iterations = linear_solver.solve(
           1. / beta, step, rhs, step_tolerance * rhs.l2_norm());

@@ -205,6 +205,7 @@ namespace FrictionalContact
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
     cholesky.clear();
+    factorizable = ShiftedCholesky::applicable(K);
 
     diagonal.reinit(K.locally_owned_domain_indices(), K.get_mpi_communicator());
     for (const auto i : K.locally_owned_domain_indices())
@@ -263,20 +264,21 @@ namespace FrictionalContact
     // auto: for the primal steps only; cholesky: for every solve.
     const bool wanted = preconditioner_choice == "cholesky" ||
                         (preconditioner_choice == "auto" && sigma > 0);
-    if (!wanted || volumetric_split() != nullptr ||
-        !ShiftedCholesky::applicable(*preconditioner_stiffness))
+    if (!wanted || volumetric_split() != nullptr || !factorizable)
       return false;
     if (!cholesky.analyzed())
       {
         const Timer timer;
         cholesky.analyze(*preconditioner_stiffness);
         factorization_seconds += timer.wall_time();
+        // A factor much denser than K (3D beyond some 10^5 unknowns) costs
+        // more per solve than the AMG's V-cycle, and memory.
+        factor_sparse_enough =
+          preconditioner_choice == "cholesky" ||
+          cholesky.predicted_factor_nonzeros() <=
+            12. * preconditioner_stiffness->n_nonzero_elements();
       }
-    // A factor much denser than K (3D beyond some 10^5 unknowns) costs
-    // more per solve than the AMG's V-cycle, and memory.
-    return preconditioner_choice == "cholesky" ||
-           cholesky.predicted_factor_nonzeros() <=
-             12. * preconditioner_stiffness->n_nonzero_elements();
+    return factor_sparse_enough;
   }
 
 

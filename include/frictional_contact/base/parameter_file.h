@@ -24,6 +24,20 @@ namespace FrictionalContact
    * if it cannot be read, is a folder, is empty, is not text, starts with
    * a byte-order mark, has CR LF ends, or includes itself.
    */
+  /// One `set` line of a parameter text: the entry's path ("Loading/End
+  /// time"), its value, and the 0-based number of its line.
+  struct ParameterEntry
+  {
+    std::string  path;
+    std::string  value;
+    unsigned int line;
+  };
+
+  /// The `set` lines of a parameter text (a file or deal.II's ShortPRM),
+  /// with their subsections, comments removed.
+  std::vector<ParameterEntry>
+  parameter_entries(std::istream &text);
+
   class ParameterFile
   {
   public:

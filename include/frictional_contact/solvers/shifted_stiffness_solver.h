@@ -239,8 +239,12 @@ namespace FrictionalContact
     SpringAMG spring_amg;
     bool      spring_amg_tried = false;
 
-    /// The factorization of K + sigma_ref I for the shifted solves.
+    /// The factorization of K + sigma_ref I for the shifted solves, whether
+    /// K can be factored here (it lives on one process), and whether its
+    /// factor is sparse enough to be used (known once it is analyzed).
     ShiftedCholesky cholesky;
+    bool            factorizable         = false;
+    bool            factor_sparse_enough = false;
 
     Vector diagonal;
     Vector inverse_diagonal;
