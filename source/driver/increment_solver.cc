@@ -101,9 +101,7 @@ namespace FrictionalContact
         // Small deformations: g_j^{l+1} = g_j^0(obstacle at t) - t_n,j^T u^l
         // (with the prescribed part of the increment).
         problem->gaps.push_back(contact.gap_at_start(j, start));
-        Tensor<1, dim> slip = contact.to_local(j, obstacle_motion);
-        slip[0]             = 0;
-        problem->obstacle_slip.push_back(slip);
+        problem->obstacle_slip.push_back(contact.prescribed_slip(j, obstacle_motion));
       }
     return problem;
   }
@@ -277,7 +275,7 @@ namespace FrictionalContact
 
     // Warm start: the reactions of the previous increment, du = 0.
     for (unsigned int j = 0; j < contact.n_local(); ++j)
-      r[j] = contact.friction_cone().project(
+      r[j] = contact.friction_cone(j).project(
         contact.to_local(j, state.contact_forces[j]));
     du = 0;
     if (solver.method->needs_smallest_eigenvalue())
@@ -312,7 +310,7 @@ namespace FrictionalContact
           problem.relative_displacement(j, outcome.du_solved));
         results.gap.push_back(problem.gaps[j] -
                               results.local_displacement.back()[0]);
-        results.state.push_back(contact.friction_cone().state(r[j]));
+        results.state.push_back(contact.friction_cone(j).state(r[j]));
         const double area = contact.nodal_area(j);
         results.pressure.push_back(area > 0 ? -r[j][0] / area : 0.);
       }

@@ -227,7 +227,7 @@ namespace FrictionalContact
         start += state.u;
         TrilinosWrappers::MPI::Vector start_ghosted = body.make_ghosted_vector();
         start_ghosted = start;
-        model.get_contact().update_pairs(body, start_ghosted);
+        model.get_contact().update_pairs(body, start_ghosted, driver.start_time(l), t);
       }
     IncrementOutcome<dim> outcome =
       increment_solver.solve(model,

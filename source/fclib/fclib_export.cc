@@ -121,7 +121,7 @@ namespace FrictionalContact
         w.push_back(problem.gaps[j]);
         for (unsigned int k = 1; k < dim; ++k)
           w.push_back(-problem.obstacle_slip[j][k]);
-        mu.push_back(contact.friction_coefficient());
+        mu.push_back(contact.friction_coefficient(j));
       }
     fclib.H = gather(rows, columns, values, offsets, comm);
     for (const auto &part : Utilities::MPI::gather(comm, w, 0))

@@ -58,15 +58,19 @@ namespace FrictionalContact
       "",
       Patterns::Anything(),
       "Contact between two bodies: 'slave boundary : master boundary' "
-      "items separated by ';', e.g. 'block bottom : base top'. The slave "
+      "items separated by ';', e.g. 'block bottom : base top'; the master "
+      "may also be the rigid tool, by its <Rigid tool/Name>. The slave "
       "side carries the contact forces (dual mortar: one friction cone per "
-      "slave node); make it the finer side. The friction coefficient is "
-      "<Friction coefficient>, as for the obstacle.");
+      "slave node); make it the finer side. A third field is the pair's "
+      "friction coefficient ('block bottom : base top : 0.3'); without it "
+      "the pair has <Friction coefficient>.");
     prm.declare_entry("Friction coefficient",
                       "0",
                       Patterns::Double(0.),
-                      "Coulomb friction coefficient mu (>= 0). 0 is "
-                      "frictionless contact.");
+                      "Coulomb friction coefficient mu (>= 0) of the "
+                      "obstacle, and of the pairs that do not give their "
+                      "own. 0 is frictionless contact.");
+    RigidTool<dim>::declare_parameters(prm);
     prm.enter_subsection("Obstacle");
     PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
       prm, "plane", "The rigid obstacle's shape.");
@@ -87,14 +91,11 @@ namespace FrictionalContact
   template <int dim>
   ContactOperator<dim>::ContactOperator(ParameterHandler    &prm,
                                         const BoundaryNames &names)
-    : cone([&]() {
-      prm.enter_subsection("Contact");
-      const double mu = prm.get_double("Friction coefficient");
-      prm.leave_subsection();
-      return mu;
-    }())
   {
     prm.enter_subsection("Contact");
+    const double mu = prm.get_double("Friction coefficient");
+    cones.emplace_back(mu);
+    tool = std::make_unique<RigidTool<dim>>(prm);
     for (const std::string &item :
          Input::split(prm.get("Contact boundaries"), ';'))
       contact_boundaries.insert(
@@ -102,18 +103,46 @@ namespace FrictionalContact
     for (const std::string &item : Input::split(prm.get("Pairs"), ';'))
       {
         const std::vector<std::string> sides = Input::split(item, ':');
-        if (sides.size() != 2)
+        if (sides.size() != 2 && sides.size() != 3)
           Input::fail("Contact/Pairs", item,
                       "'slave boundary : master boundary', e.g. "
-                      "'block bottom : base top'");
-        const types::boundary_id slave  = names.id("Contact/Pairs", sides[0]);
+                      "'block bottom : base top', or with the pair's "
+                      "friction coefficient 'block bottom : base top : 0.3'");
+        const double pair_mu =
+          sides.size() == 2 ? mu :
+                              Input::parse_vector<1>("Contact/Pairs", sides[2])[0];
+        if (!(pair_mu >= 0))
+          Input::fail("Contact/Pairs", item,
+                      "a friction coefficient >= 0 in the third field");
+        cones.emplace_back(pair_mu);
+        if (tool->active() && sides[0] == tool->tool_name())
+          Input::fail("Contact/Pairs", item,
+                      "the rigid tool as the master (second) side: the "
+                      "slave side carries the contact forces, a body's "
+                      "boundary does");
+        const types::boundary_id slave = names.id("Contact/Pairs", sides[0]);
+        if (contact_boundaries.count(slave) > 0)
+          Input::fail("Contact/Pairs", item,
+                      "a slave boundary that is not in <Contact/Contact boundaries>");
+        if (tool->active() && sides[1] == tool->tool_name())
+          {
+            interfaces.emplace_back(slave, numbers::invalid_boundary_id, tool.get());
+            continue;
+          }
         const types::boundary_id master = names.id("Contact/Pairs", sides[1]);
-        if (slave == master || contact_boundaries.count(slave) > 0)
+        if (slave == master || contact_boundaries.count(master) > 0)
           Input::fail("Contact/Pairs", item,
                       "two different boundaries, neither of them in "
                       "<Contact/Contact boundaries>");
         interfaces.emplace_back(slave, master);
       }
+    if (tool->active() &&
+        std::none_of(interfaces.begin(), interfaces.end(), [](const auto &interface) {
+          return interface.has_rigid_master();
+        }))
+      Input::fail("Contact/Rigid tool/Name", tool->tool_name(),
+                  "a tool that a pair of <Contact/Pairs> names as its master "
+                  "('slab top : " + tool->tool_name() + "'), or an empty name");
     prm.enter_subsection("Obstacle");
     obstacle = PluginRegistry<Obstacle::Interface<dim>>::create(prm);
     rigid_displacement =
@@ -231,8 +260,7 @@ namespace FrictionalContact
         for (const types::material_id id : interfaces[k].slave_bodies())
           if (interfaces[k].master_bodies().count(id) > 0)
             throw InputError(
-              "<Contact/Pairs> = '" + names.name(interfaces[k].slave_boundary()) +
-              " : " + names.name(interfaces[k].master_boundary()) +
+              "<Contact/Pairs> = '" + pair_name(k, names) +
               "': both sides are on the body '" + body.body_name(id) +
               "'; a pair is between two bodies (the contact of a body with "
               "itself is not supported)");
@@ -253,7 +281,7 @@ namespace FrictionalContact
     nodes.reserve(found.size());
     for (const auto &[dof, node] : found)
       nodes.push_back(node);
-    if (cone.mu > 0)
+    if (has_friction())
       tangents.resize(nodes.size());
     n_global = Utilities::MPI::sum<types::global_dof_index>(
       nodes.size(), body.get_mpi_communicator());
@@ -270,7 +298,7 @@ namespace FrictionalContact
     if (has_pairs())
       {
         Vector zero = body.make_ghosted_vector();
-        update_pairs(body, zero);
+        update_pairs(body, zero, 0., 0.);
       }
     // Neither the obstacle nor another body may start inside a body.
     double  smallest_gap[2] = {0, 0};
@@ -314,8 +342,10 @@ namespace FrictionalContact
         throw InputError("<Contact/Pairs>: the bodies overlap at the start: "
                          "the slave vertex at (" + at + ") is " +
                          Input::to_text(-where.min) +
-                         " inside the other body; move them apart (for "
-                         "stacked blocks, <Geometry/Stacked blocks/Block offset>)");
+                         " inside the other body or tool; move them apart "
+                         "(for stacked blocks, <Geometry/Stacked blocks/Block "
+                         "offset>; for a tool, <Contact/Rigid tool/Translation> "
+                         "at t = 0)");
       }
   }
 
@@ -354,11 +384,14 @@ namespace FrictionalContact
   template <int dim>
   void
   ContactOperator<dim>::update_pairs(const ElasticBody<dim> &body,
-                                     const Vector           &u_ghosted)
+                                     const Vector           &u_ghosted,
+                                     const double            t_start,
+                                     const double            t_end)
   {
     for (MortarInterface<dim> &interface : interfaces)
-      interface.update(body, u_ghosted);
+      interface.update(body, u_ghosted, t_start, t_end);
     pair_gaps.assign(nodes.size(), 0.);
+    pair_motions.assign(nodes.size(), Tensor<1, dim>());
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair >= 0)
         {
@@ -376,6 +409,7 @@ namespace FrictionalContact
           nodes[j].into_obstacle = normal;
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
           pair_gaps[j]  = data->gap;
+          pair_motions[j] = data->master_motion;
           if (!tangents.empty())
             tangents[j] = tangents_to<dim>(normal);
         }
@@ -578,7 +612,7 @@ namespace FrictionalContact
   double
   ContactOperator<dim>::orthonormality_defect() const
   {
-    const unsigned int n_columns = cone.mu > 0 ? dim : 1;
+    const unsigned int n_columns = has_friction() ? dim : 1;
     double             defect    = 0;
     for (unsigned int j = 0; j < nodes.size(); ++j)
       for (unsigned int a = 0; a < n_columns; ++a)
@@ -602,7 +636,27 @@ namespace FrictionalContact
   {
     return nodes.capacity() * sizeof(Node) +
            tangents.capacity() * sizeof(tangents[0]) +
-           pair_gaps.capacity() * sizeof(double);
+           pair_gaps.capacity() * sizeof(double) +
+           pair_motions.capacity() * sizeof(Tensor<1, dim>);
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactOperator<dim>::describe_friction(const BoundaryNames &names) const
+  {
+    if (!has_friction())
+      return "frictionless (no tangential operator)";
+    // The coefficient of the obstacle (or of the first pair), then each
+    // pair that has another.
+    const double common = contact_boundaries.empty() ? cones[1].mu : cones[0].mu;
+    std::string  others;
+    for (unsigned int k = 0; k < interfaces.size(); ++k)
+      if (cones[k + 1].mu != common)
+        others += "; " + Input::to_text(cones[k + 1].mu) + " on '" +
+                  pair_name(k, names) + "'";
+    return "frictional (mu = " + Input::to_text(common) + others + ")";
   }
 
 
@@ -614,10 +668,22 @@ namespace FrictionalContact
     std::string text;
     for (const types::boundary_id id : contact_boundaries)
       text += (text.empty() ? "" : ", ") + names.name(id);
-    for (const MortarInterface<dim> &interface : interfaces)
-      text += (text.empty() ? "" : ", ") + names.name(interface.slave_boundary()) +
-              " : " + names.name(interface.master_boundary());
+    for (unsigned int k = 0; k < interfaces.size(); ++k)
+      text += (text.empty() ? "" : ", ") + pair_name(k, names);
     return text;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContactOperator<dim>::pair_name(const unsigned int   k,
+                                  const BoundaryNames &names) const
+  {
+    return names.name(interfaces[k].slave_boundary()) + " : " +
+           (interfaces[k].has_rigid_master() ?
+              tool->tool_name() :
+              names.name(interfaces[k].master_boundary()));
   }
 
   template class ContactOperator<2>;

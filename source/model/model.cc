@@ -181,12 +181,9 @@ namespace FrictionalContact
         << body->get_dof_handler().n_dofs() << std::endl;
     if (contact->active())
       {
-        const double      mu    = contact->friction_coefficient();
         const std::size_t bytes = Utilities::MPI::sum(
           contact->memory_consumption(), get_mpi_communicator());
-        out << "Contact: "
-            << (mu > 0 ? "frictional (mu = " + Input::to_text(mu) + ")" :
-                         std::string("frictionless (no tangential operator)"))
+        out << "Contact: " << contact->describe_friction(boundary_names)
             << ", c = " << contact->n_candidates() << " candidates on "
             << contact->describe_boundaries(boundary_names) << "; " << bytes
             << " bytes of contact data" << std::endl;

@@ -45,9 +45,11 @@ namespace FrictionalContact
 
   template <int dim>
   MortarInterface<dim>::MortarInterface(const types::boundary_id slave,
-                                        const types::boundary_id master)
+                                        const types::boundary_id master,
+                                        const RigidTool<dim>    *tool)
     : slave_id(slave)
     , master_id(master)
+    , tool(tool)
   {}
 
 
@@ -112,8 +114,11 @@ namespace FrictionalContact
     // The slave faces of every cell this rank sees (to find the slave
     // vertices it owns); only those of its own cells are integrated.
     slave_faces = collect_faces(body, slave_id, [](const auto &) { return true; });
+    // A rigid tool's faces are not the mesh's.
     local_master_faces =
-      collect_faces(body, master_id, [](const auto &cell) { return cell->is_locally_owned(); });
+      collect_faces(body, master_id, [this](const auto &cell) {
+        return tool == nullptr && cell->is_locally_owned();
+      });
     for (unsigned int side = 0; side < 2; ++side)
       {
         std::set<types::material_id> found;
@@ -261,13 +266,26 @@ namespace FrictionalContact
   template <int dim>
   void
   MortarInterface<dim>::update(const ElasticBody<dim> &body,
-                               const Vector           &u_ghosted)
+                               const Vector           &u_ghosted,
+                               const double            t_start,
+                               const double            t_end)
   {
     const MPI_Comm  comm     = body.get_mpi_communicator();
     const IndexSet &owned    = body.locally_owned_dofs();
     const IndexSet  relevant =
       DoFTools::extract_locally_relevant_dofs(body.get_dof_handler());
-    const auto masters = gather_master_faces(u_ghosted, comm);
+    // The master faces in the current configuration: the body's of every
+    // rank, or the tool's where it stands at t_end (and where it stood).
+    std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>> masters;
+    std::vector<MortarSegments::FaceVertices<dim>> tool_at_start;
+    if (tool != nullptr)
+      {
+        for (const auto &y : tool->faces_at(t_end))
+          masters.emplace_back(y, nullptr);
+        tool_at_start = tool->faces_at(t_start);
+      }
+    else
+      masters = gather_master_faces(u_ghosted, comm);
 
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
     std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> master_vertex;
@@ -276,16 +294,18 @@ namespace FrictionalContact
         const auto &[y, face] = masters[m];
         boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(y.begin(), y.end())),
                            m);
-        for (unsigned int b = 0; b < n_face_vertices; ++b)
-          master_vertex[face->dofs[b][0]] = {face->dofs[b], y[b]};
+        if (face != nullptr)
+          for (unsigned int b = 0; b < n_face_vertices; ++b)
+            master_vertex[face->dofs[b][0]] = {face->dofs[b], y[b]};
       }
     const auto tree = pack_rtree(boxes);
 
     // Each face of this rank's cells adds, once, to the rows of its
     // vertices: the face normal at each component dof, the lumped weight and
-    // the row of M at the x dof. A hanging vertex has no multiplier of its
-    // own: its part goes to the vertices it hangs from, with the
-    // constraint's weights (as its force and area do in ContactOperator).
+    // the row of M at the x dof (for a tool, its sums). A hanging vertex has
+    // no multiplier of its own: its part goes to the vertices it hangs from,
+    // with the constraint's weights (as its force and area do in
+    // ContactOperator).
     const AffineConstraints<double> &hanging = body.get_hanging_node_constraints();
     const auto to_parents = [&](const types::global_dof_index dof, const auto &add) {
       if (!hanging.is_constrained(dof))
@@ -298,6 +318,10 @@ namespace FrictionalContact
     Vector normal_sum, lumped_sum;
     normal_sum.reinit(owned, relevant, comm, true);
     lumped_sum.reinit(owned, relevant, comm, true);
+    RigidRows rigid;
+    if (tool != nullptr)
+      for (Vector *v : {&rigid.weight, &rigid.point, &rigid.motion})
+        v->reinit(owned, relevant, comm, true);
     std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> M_entries;
     for (const Face &face : slave_faces)
       if (face.owned_cell)
@@ -323,22 +347,100 @@ namespace FrictionalContact
           for (const auto &[box, m] : near)
             {
               const auto &[y, master] = masters[m];
-              if (outward_normal(y, master->orientation) * normal >= 0)
+              const double orientation = master != nullptr ? master->orientation : 1.;
+              if (outward_normal(y, orientation) * normal >= 0)
                 continue; // not facing the slave
               const Table<2, double> M = MortarSegments::face_integrals<dim>(x, normal, y);
               for (unsigned int a = 0; a < n_face_vertices; ++a)
                 for (unsigned int b = 0; b < n_face_vertices; ++b)
-                  if (M(a, b) != 0)
+                  if (M(a, b) == 0)
+                    continue;
+                  else if (master != nullptr)
                     to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
                       M_entries[{dof, master->dofs[b][0]}] += w * M(a, b);
                     });
+                  else
+                    {
+                      const Tensor<1, dim> motion = y[b] - tool_at_start[m][b];
+                      to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
+                        rigid.weight[dof] += w * M(a, b);
+                      });
+                      for (unsigned int c = 0; c < dim; ++c)
+                        to_parents(face.dofs[a][c], [&](const auto dof, const double w) {
+                          rigid.point[dof] += w * M(a, b) * y[b][c];
+                          rigid.motion[dof] += w * M(a, b) * motion[c];
+                        });
+                    }
             }
         }
     normal_sum.compress(VectorOperation::add);
     lumped_sum.compress(VectorOperation::add);
+    if (tool != nullptr)
+      {
+        for (Vector *v : {&rigid.weight, &rigid.point, &rigid.motion})
+          v->compress(VectorOperation::add);
+        finish_rigid_rows(normal_sum, lumped_sum, rigid, u_ghosted);
+      }
+    else
+      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, u_ghosted,
+                  relevant, comm);
+  }
 
+
+
+  template <int dim>
+  Point<dim>
+  MortarInterface<dim>::start_node(const types::global_dof_index dof,
+                                   const Vector                 &normal_sum,
+                                   const Vector                 &lumped_sum,
+                                   const Vector                 &u_ghosted)
+  {
+    const auto &[dofs, reference] = slave_vertices.at(dof);
+    SlaveNode  &node              = nodes[dof];
+    node                          = SlaveNode();
+    Point<dim> position           = reference;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        node.normal[c] = normal_sum[dofs[c]];
+        position[c] += u_ghosted[dofs[c]];
+      }
+    node.normal /= node.normal.norm();
+    node.full_weight = lumped_sum[dof];
+    return position;
+  }
+
+
+
+  template <int dim>
+  bool
+  MortarInterface<dim>::covered(SlaveNode &node) const
+  {
+    // A node the master hardly covers gets no mortar row: it is free this
+    // increment (a weight near 0 would make P_jl = M_jl / D_jj huge).
+    if (node.weight > 1e-3 * node.full_weight)
+      return true;
+    node.weight = 0;
+    node.gap    = reach;
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  MortarInterface<dim>::finish_rows(
+    const Vector &normal_sum,
+    const Vector &lumped_sum,
+    const std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>
+      &M_entries,
+    const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> &master_vertex,
+    const Vector   &u_ghosted,
+    const IndexSet &relevant,
+    const MPI_Comm  comm)
+  {
     // The rows of M, summed over the ranks: rows are the slave vertices' x
     // dofs, columns the master vertices'.
+    const IndexSet                   &owned = normal_sum.locally_owned_elements();
     TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
     for (const auto &[entry, value] : M_entries)
       pattern.add(entry.first, entry.second);
@@ -350,16 +452,7 @@ namespace FrictionalContact
 
     for (auto &[dof, node] : nodes)
       {
-        const auto &[dofs, reference] = slave_vertices.at(dof);
-        node = SlaveNode();
-        Point<dim> position = reference;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            node.normal[c] = normal_sum[dofs[c]];
-            position[c] += u_ghosted[dofs[c]];
-          }
-        node.normal /= node.normal.norm();
-        node.full_weight = lumped_sum[dof];
+        const Point<dim> position = start_node(dof, normal_sum, lumped_sum, u_ghosted);
         std::vector<std::pair<types::global_dof_index, double>> row;
         for (auto entry = M.begin(dof); entry != M.end(dof); ++entry)
           if (entry->value() != 0)
@@ -367,14 +460,8 @@ namespace FrictionalContact
               row.emplace_back(entry->column(), entry->value());
               node.weight += entry->value();
             }
-        // A node the master hardly covers gets no mortar row: it is free
-        // this increment (a weight near 0 would make P_jl = M_jl / D_jj huge).
-        if (!(node.weight > 1e-3 * node.full_weight))
-          {
-            node.weight = 0;
-            node.gap    = reach;
-            continue;
-          }
+        if (!covered(node))
+          continue;
         for (const auto &[column, m] : row)
           {
             const auto &[master_dofs, master_position] = master_vertex.at(column);
@@ -382,6 +469,32 @@ namespace FrictionalContact
             node.masters.emplace_back(master_dofs, p);
             node.gap += p * (node.normal * (master_position - position));
           }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MortarInterface<dim>::finish_rigid_rows(const Vector    &normal_sum,
+                                          const Vector    &lumped_sum,
+                                          const RigidRows &rigid,
+                                          const Vector    &u_ghosted)
+  {
+    for (auto &[dof, node] : nodes)
+      {
+        const Point<dim> position = start_node(dof, normal_sum, lumped_sum, u_ghosted);
+        node.weight               = rigid.weight[dof];
+        if (!covered(node))
+          continue;
+        const NodeDofs &dofs = slave_vertices.at(dof).first;
+        Tensor<1, dim>  mean_point;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            mean_point[c]         = rigid.point[dofs[c]] / node.weight;
+            node.master_motion[c] = rigid.motion[dofs[c]] / node.weight;
+          }
+        node.gap = node.normal * (mean_point - position);
       }
   }
 

@@ -22,7 +22,7 @@ namespace FrictionalContact
           s.stick_area += contact.nodal_area(j);
         s.max_pressure = std::max(s.max_pressure, results.pressure[j]);
         s.force += contact_forces[j];
-        if (!contact.is_pair_node(j))
+        if (!contact.acts_between_bodies(j))
           s.external_force += contact_forces[j];
         s.normal_force -= results.reaction[j][0];
         Tensor<1, dim> normal_part;

@@ -16,14 +16,15 @@ namespace FrictionalContact
     scratch -= T_r;
 
     const ContactMap<dim>      &contact = problem.contact;
-    const double                mu      = contact.friction_coefficient();
     double local[2]                     = {0., 0.};
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
         const double         g_j = problem.gaps[j];
         Tensor<1, dim>       v   = u_j;
-        v[0] = -g_j - mu * FrictionCone<dim>::tangential_norm(u_j) + u_j[0];
+        v[0] = -g_j -
+               contact.friction_coefficient(j) * FrictionCone<dim>::tangential_norm(u_j) +
+               u_j[0];
         local[0] += v * r[j];
         local[1] += std::pow(std::min(g_j - u_j[0], 0.), 2);
       }

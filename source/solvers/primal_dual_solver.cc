@@ -134,8 +134,6 @@ namespace FrictionalContact
   {
     const Timer                 timer;
     const ContactMap<dim>      &contact = problem.contact;
-    const FrictionCone<dim>    &cone    = contact.friction_cone();
-    const double                mu      = cone.mu;
     const unsigned int          c_local = contact.n_local();
     const std::vector<double>  &g       = problem.gaps;
     const unsigned int amg_setups_before = linear_solver.n_amg_setups;
@@ -168,8 +166,10 @@ namespace FrictionalContact
             const Tensor<1, dim> u_j     = problem.relative_displacement(j, du);
             const Tensor<1, dim> u_hat_j = problem.relative_displacement(j, du_hat);
             // The modified gap; without friction it is the gap itself.
+            const FrictionCone<dim> &cone = contact.friction_cone(j);
             const double g_tilde =
-              mu > 0 ? g[j] + mu * FrictionCone<dim>::tangential_norm(u_j) : g[j];
+              cone.mu > 0 ? g[j] + cone.mu * FrictionCone<dim>::tangential_norm(u_j) :
+                            g[j];
             Tensor<1, dim> s = r[j] - alpha * u_hat_j;
             s[0]             = r[j][0] + alpha * (g_tilde - u_hat_j[0]);
             r[j]             = cone.project(s);

@@ -144,7 +144,7 @@ namespace FrictionalContact
                      const NodeProjection<dim>          &P,
                      const ConditionPreconditioner<dim> &preconditioner,
                      ShiftedStiffnessSolver             &linear_solver,
-                     const double                        mu_k,
+                     const bool                          friction,
                      const double                        reduction,
                      const double                        floor,
                      TrilinosWrappers::MPI::Vector      &du,
@@ -154,7 +154,7 @@ namespace FrictionalContact
     {
       const TrilinosWrappers::SparseMatrix &K = problem.stiffness;
       const bool any_slip = Utilities::MPI::logical_or(
-        impose_node_conditions(problem, sets.conditions, du) && mu_k > 0,
+        impose_node_conditions(problem, sets.conditions, du) && friction,
         du.get_mpi_communicator());
       const ContactStiffness<dim> A(K,
                                     P,
@@ -162,7 +162,7 @@ namespace FrictionalContact
                                     sets.conditions,
                                     sets.slip_direction,
                                     sets.robin,
-                                    any_slip ? mu_k : 0.);
+                                    any_slip);
       K.vmult(K_du, du);
       rhs = problem.load;
       rhs -= K_du;
@@ -200,7 +200,7 @@ namespace FrictionalContact
                          TrilinosWrappers::MPI::Vector       &scratch)
     {
       for (unsigned int j = 0; j < r.size(); ++j)
-        admissible_r[j] = problem.contact.friction_cone().project(r[j]);
+        admissible_r[j] = problem.contact.friction_cone(j).project(r[j]);
       problem.contact.apply(admissible_r, T_r);
       return compute_residuals(problem, du, K_du, T_r, admissible_r, scratch);
     }
@@ -208,22 +208,25 @@ namespace FrictionalContact
 
 
     /**
-     * The stopping rule: force balance below tolerance |p|, penetration
-     * below tolerance L, complementarity below tolerance |p| L, with L the
-     * larger of the length scale and max |du|.
+     * The stopping rule: force balance below tolerance F, penetration
+     * below tolerance L, complementarity below tolerance F L, with F the
+     * larger of |p| and |K du| (a moving obstacle or tool may drive the
+     * body without any load) and L the larger of the length scale and
+     * max |du|.
      */
     template <int dim>
     bool
     meets(const double                         tolerance,
           const IncrementalProblem<dim>       &problem,
           const TrilinosWrappers::MPI::Vector &du,
+          const TrilinosWrappers::MPI::Vector &K_du,
           const Residuals                     &res)
     {
-      const double load_norm = problem.load.l2_norm();
+      const double force  = std::max(problem.load.l2_norm(), K_du.l2_norm());
       const double length = std::max(problem.length_scale, du.linfty_norm());
-      return res.force_balance <= tolerance * load_norm &&
+      return res.force_balance <= tolerance * force &&
              res.penetration <= tolerance * length &&
-             res.complementarity <= tolerance * load_norm * length;
+             res.complementarity <= tolerance * force * length;
     }
 
     /// (du, r) = (1 - t) (previous_du, previous_r) + t (du, r).
@@ -302,7 +305,7 @@ namespace FrictionalContact
                       const std::vector<NodeCondition> &conditions,
                       const std::vector<double>        &c,
                       const std::vector<double>        &c_t,
-                      const double                      mu_k,
+                      const bool                        friction,
                       const double                      mean_c,
                       TrilinosWrappers::MPI::Vector    &du,
                       std::vector<Tensor<1, dim>>      &r,
@@ -316,7 +319,7 @@ namespace FrictionalContact
       work.residual = work.K_du;
       work.residual -= problem.load;
       work.residual -= work.T_r;
-      const MeritAlongStep<dim> merit(problem, c, c_t, mu_k, mean_c,
+      const MeritAlongStep<dim> merit(problem, c, c_t, friction, mean_c,
                                       work.previous_du, du, work.previous_r, r,
                                       work.previous_residual, work.residual,
                                       work.scratch);
@@ -457,7 +460,7 @@ namespace FrictionalContact
     using namespace SemismoothNewton;
     const Timer                           timer;
     const ContactMap<dim>                &contact = problem.contact;
-    const double       mu       = contact.friction_coefficient();
+    const bool has_friction = contact.largest_friction_coefficient() > 0;
     const unsigned int n        = contact.n_local();
     const MPI_Comm     comm     = du.get_mpi_communicator();
     const unsigned int setups   = linear_solver.n_amg_setups;
@@ -481,7 +484,7 @@ namespace FrictionalContact
 
     // From a cold start, the frictionless problem first: the normal sets
     // settle in a few steps, and friction then starts from real pressures.
-    bool friction = mu > 0 && any_reaction(r, comm);
+    bool friction = has_friction && any_reaction(r, comm);
 
     const double load_norm = problem.load.l2_norm();
     NewtonWorkspace<dim> work(du, n);
@@ -503,7 +506,7 @@ namespace FrictionalContact
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
         // Done when the residuals of the current iterate are small.
-        if (k > 0 && meets(this->stop.tolerance, problem, du, result.residuals))
+        if (k > 0 && meets(this->stop.tolerance, problem, du, work.K_du, result.residuals))
           {
             result.converged = true;
             break;
@@ -513,18 +516,17 @@ namespace FrictionalContact
         // once the normal sets of the frictionless start have settled, sort
         // them again with friction.
         unsigned int changes = Utilities::MPI::sum(
-          classify(problem, du, r, c, friction ? mu : 0., sets), comm);
-        if (!friction && mu > 0 && changes == 0 && k > 0)
+          classify(problem, du, r, c, friction, sets), comm);
+        if (!friction && has_friction && changes == 0 && k > 0)
           {
             friction = true;
             progress.restart(k);
             changes = Utilities::MPI::sum(
-              classify(problem, du, r, c, mu, sets), comm);
+              classify(problem, du, r, c, true, sets), comm);
           }
-        const double mu_k = friction ? mu : 0.;
 
         // The preconditioner for the new conditions, if they changed.
-        if (preconditioner.update(sets, c, mu_k > 0, comm))
+        if (preconditioner.update(sets, c, friction, comm))
           ++result.amg_updates;
 
         // The linear problem: du = du_D + w, with du_D meeting the node
@@ -535,7 +537,7 @@ namespace FrictionalContact
         try
           {
             linear_iterations =
-              solve_linearized(problem, sets, P, preconditioner, linear_solver, mu_k,
+              solve_linearized(problem, sets, P, preconditioner, linear_solver, friction,
                                forcing_term, 0.1 * this->stop.tolerance * load_norm,
                                du, work.K_du, work.rhs, work.w);
           }
@@ -547,7 +549,7 @@ namespace FrictionalContact
         result.linear_iterations += linear_iterations;
 
         const LineSearchStep step = search_along_step(
-          problem, conditions, c, sets.c_t, mu_k, mean_c, du, r, work);
+          problem, conditions, c, sets.c_t, friction, mean_c, du, r, work);
         forcing.record(std::sqrt(step.merit_before),
                        std::sqrt(step.merit_after),
                        step.t == 1);

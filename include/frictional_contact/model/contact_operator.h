@@ -7,6 +7,7 @@
 #include <frictional_contact/solvers/contact_map.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/mortar_interface.h>
+#include <frictional_contact/model/rigid_tool.h>
 #include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/time_function.h>
@@ -65,11 +66,38 @@ namespace FrictionalContact
     /**
      * Rebuilds the mortar data of every pair in the configuration X + u
      * (@p u_ghosted with ghost entries): the slave nodes' frames, areas and
-     * gaps, and the rows P_jl. Call at the start of every increment, with
-     * the displacement the increment starts from. Collective.
+     * gaps, and the rows P_jl; a rigid tool stands where it is at @p t_end.
+     * Call at the start of every increment (from @p t_start to @p t_end),
+     * with the displacement the increment starts from. Collective.
      */
     void
-    update_pairs(const ElasticBody<dim> &body, const Vector &u_ghosted);
+    update_pairs(const ElasticBody<dim> &body,
+                 const Vector           &u_ghosted,
+                 const double            t_start,
+                 const double            t_end);
+
+    /**
+     * The prescribed tangential motion over the increment of what node j
+     * touches, in its frame (component 0 is zero: the gap has the normal
+     * part): for a candidate facing the obstacle, the obstacle's
+     * @p obstacle_motion; for a slave node of a rigid tool, the tool's
+     * motion there; 0 for a deformable master (its motion is unknown).
+     */
+    Tensor<1, dim>
+    prescribed_slip(const unsigned int j, const Tensor<1, dim> &obstacle_motion) const
+    {
+      Tensor<1, dim> slip =
+        to_local(j, nodes[j].pair < 0 ? obstacle_motion : pair_motions[j]);
+      slip[0] = 0;
+      return slip;
+    }
+
+    /// The rigid tool (inactive if the scene has none).
+    const RigidTool<dim> &
+    rigid_tool() const
+    {
+      return *tool;
+    }
 
     /**
      * The gap of candidate j at the start of an increment whose
@@ -246,12 +274,13 @@ namespace FrictionalContact
     double
     orthonormality_defect() const;
 
-    /// Whether candidate j is a pair's slave node (not facing the obstacle):
-    /// its force acts between two bodies and adds nothing to the whole.
+    /// Whether candidate j is a slave node of a pair of two bodies (not
+    /// facing the obstacle or a tool): its force acts between the bodies
+    /// and adds nothing to the whole.
     bool
-    is_pair_node(const unsigned int j) const
+    acts_between_bodies(const unsigned int j) const
     {
-      return nodes[j].pair >= 0;
+      return nodes[j].pair >= 0 && !interfaces[nodes[j].pair].has_rigid_master();
     }
 
     /// Global index of the x-displacement dof of candidate j.
@@ -297,15 +326,42 @@ namespace FrictionalContact
     Tensor<1, dim>
     to_cartesian(const unsigned int j, const Tensor<1, dim> &v) const;
 
+    /// The obstacle's cone for its candidates, the pair's for its slave nodes.
     const FrictionCone<dim> &
-    friction_cone() const override
+    friction_cone(const unsigned int j) const override
     {
-      return cone;
+      return cones[nodes[j].pair + 1];
+    }
+
+    double
+    largest_friction_coefficient() const override
+    {
+      // The obstacle's coefficient counts only if the scene has an obstacle.
+      double largest = contact_boundaries.empty() ? 0. : cones[0].mu;
+      for (unsigned int k = 1; k < cones.size(); ++k)
+        largest = std::max(largest, cones[k].mu);
+      return largest;
+    }
+
+    /// Whether the obstacle or any pair has friction (then T has tangents).
+    bool
+    has_friction() const
+    {
+      return largest_friction_coefficient() > 0;
     }
 
     /// Bytes held for the candidates (frames, dofs).
     std::size_t
     memory_consumption() const;
+
+    /// "frictionless (...)", "frictional (mu = 0.3)", or with pairs of
+    /// their own coefficients "frictional (mu = 0.3; 0.5 on 'a : b')".
+    std::string
+    describe_friction(const BoundaryNames &names) const;
+
+    /// "slave : master" of pair @p k (the tool's name for a tool).
+    std::string
+    pair_name(const unsigned int k, const BoundaryNames &names) const;
 
     /// "bottom" or "bottom, top"
     std::string
@@ -345,12 +401,17 @@ namespace FrictionalContact
     void
     check_initial_gaps(const ElasticBody<dim> &body);
 
-    FrictionCone<dim>                            cone;
+    /// The obstacle's friction cone, then one per pair (in <Contact/Pairs>'s order).
+    std::vector<FrictionCone<dim>>               cones;
     std::set<types::boundary_id>                 contact_boundaries;
     /// The pairs of two bodies (<Contact/Pairs>), and the gap of each
     /// candidate that is a pair's slave node (empty without pairs).
     std::vector<MortarInterface<dim>>            interfaces;
     std::vector<double>                          pair_gaps;
+    /// The rigid tool's motion over the increment at each of its slave
+    /// nodes, Cartesian (zero elsewhere).
+    std::vector<Tensor<1, dim>>                  pair_motions;
+    std::unique_ptr<RigidTool<dim>>              tool;
     std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
     std::vector<Node>                            nodes;
     /// T_t,j; empty without friction (the tangential operator is not needed).

@@ -6,6 +6,7 @@
 
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/mortar_segments.h>
+#include <frictional_contact/model/rigid_tool.h>
 
 #include <array>
 #include <map>
@@ -24,7 +25,10 @@ namespace FrictionalContact
    * displacements to the slave node, and the nodal gap
    * sum_l P_jl n_j . (y_l - x_j). Small sliding: the data is frozen within
    * an increment. Master faces may live on any rank: their current
-   * vertices are gathered on every rank at each update.
+   * vertices are gathered on every rank at each update. The master may
+   * also be a rigid tool, whose faces every rank knows and whose
+   * displacement is given: then the rows P_jl have no unknowns, and each
+   * slave node keeps the tool's motion over the increment instead.
    */
   template <int dim>
   class MortarInterface
@@ -33,8 +37,11 @@ namespace FrictionalContact
     using Vector = TrilinosWrappers::MPI::Vector;
     using NodeDofs = std::array<types::global_dof_index, dim>;
 
+    /// A pair of two boundaries of the mesh, or with @p tool (then
+    /// @p master is not used) a boundary against a rigid tool.
     MortarInterface(const types::boundary_id slave,
-                    const types::boundary_id master);
+                    const types::boundary_id master,
+                    const RigidTool<dim>    *tool = nullptr);
 
     /// Collects the faces of both boundaries on the current mesh.
     void
@@ -42,10 +49,22 @@ namespace FrictionalContact
 
     /**
      * Computes the mortar data of the locally owned slave vertices in the
-     * configuration X + u, @p u_ghosted with ghost entries. Collective.
+     * configuration X + u, @p u_ghosted with ghost entries, for the
+     * increment from @p t_start to @p t_end (a rigid tool stands where it
+     * is at @p t_end). Collective.
      */
     void
-    update(const ElasticBody<dim> &body, const Vector &u_ghosted);
+    update(const ElasticBody<dim> &body,
+           const Vector           &u_ghosted,
+           const double            t_start,
+           const double            t_end);
+
+    /// Whether the master is a rigid tool.
+    bool
+    has_rigid_master() const
+    {
+      return tool != nullptr;
+    }
 
     /// The mortar data of a slave vertex.
     struct SlaveNode
@@ -59,8 +78,12 @@ namespace FrictionalContact
       double full_weight = 0;
       /// The nodal gap to the master (length), if the node has a master.
       double gap = 0;
-      /// The master vertices and P_jl.
+      /// The master vertices and P_jl (none for a rigid tool).
       std::vector<std::pair<NodeDofs, double>> masters;
+      /// The master's displacement over the increment at the node,
+      /// sum_l P_jl (y_l(t_end) - y_l(t_start)): a rigid tool's motion; 0
+      /// for a deformable master, whose motion is unknown.
+      Tensor<1, dim> master_motion;
     };
 
     /// The data of the locally owned slave vertex whose x dof is @p dof,
@@ -163,7 +186,51 @@ namespace FrictionalContact
     std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>>
     gather_master_faces(const Vector &u_ghosted, const MPI_Comm comm);
 
-    types::boundary_id slave_id, master_id;
+    /// Sums of a rigid master's rows at the slave dofs (written at every
+    /// relevant dof, added over the ranks by compress): D_jj at the x dof,
+    /// sum_l M_jl y_l and sum_l M_jl (y_l(t_end) - y_l(t_start)) at the
+    /// component dofs.
+    struct RigidRows
+    {
+      Vector weight, point, motion;
+    };
+
+    /// Resets the data of slave vertex @p dof to its normal and full
+    /// weight (from the sums over the faces); returns its current position.
+    Point<dim>
+    start_node(const types::global_dof_index dof,
+               const Vector                 &normal_sum,
+               const Vector                 &lumped_sum,
+               const Vector                 &u_ghosted);
+
+    /// Whether the master covers enough of @p node's surface to give it a
+    /// row; if not, the node is free this increment (weight 0, gap reach).
+    bool
+    covered(SlaveNode &node) const;
+
+    /// The rows P_jl and gaps of a deformable master, from the entries of
+    /// M this rank integrated (summed over the ranks here).
+    void
+    finish_rows(
+      const Vector &normal_sum,
+      const Vector &lumped_sum,
+      const std::map<std::pair<types::global_dof_index, types::global_dof_index>,
+                     double> &M_entries,
+      const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>>
+                     &master_vertex,
+      const Vector   &u_ghosted,
+      const IndexSet &relevant,
+      const MPI_Comm  comm);
+
+    /// The gaps and tool motions of a rigid master, from its row sums.
+    void
+    finish_rigid_rows(const Vector    &normal_sum,
+                      const Vector    &lumped_sum,
+                      const RigidRows &rigid,
+                      const Vector    &u_ghosted);
+
+    types::boundary_id    slave_id, master_id;
+    const RigidTool<dim> *tool;
     std::vector<Face>  slave_faces;
     /// The master faces of this rank's cells, and of all ranks (the dofs
     /// and orientations are gathered at setup, the positions at update).

@@ -83,15 +83,21 @@ namespace FrictionalContact
     virtual double
     largest_singular_value() const = 0;
 
-    /// The friction cone (one coefficient for all candidates).
+    /// The friction cone of candidate j (each contact pair may have its
+    /// own coefficient).
     virtual const FrictionCone<dim> &
-    friction_cone() const = 0;
+    friction_cone(const unsigned int j) const = 0;
 
     double
-    friction_coefficient() const
+    friction_coefficient(const unsigned int j) const
     {
-      return friction_cone().mu;
+      return friction_cone(j).mu;
     }
+
+    /// The largest friction coefficient of any candidate on any rank (0:
+    /// frictionless everywhere).
+    virtual double
+    largest_friction_coefficient() const = 0;
   };
 
   /// The mean over all candidates of @p local_values, one value per local

@@ -84,14 +84,14 @@ namespace FrictionalContact
                        const std::vector<NodeCondition>     &conditions,
                        const std::vector<Tensor<1, dim>>    &slip_direction,
                        const std::vector<double>            &robin,
-                       const double                          mu)
+                       const bool                            friction)
         : K(K)
         , P(P)
         , contact(contact)
         , conditions(conditions)
         , slip_direction(slip_direction)
         , robin(robin)
-        , mu(mu)
+        , friction(friction)
       {}
 
       void
@@ -115,13 +115,16 @@ namespace FrictionalContact
       void
       couple(Vector &v) const
       {
-        if (mu == 0)
+        if (!friction)
           return;
         for (unsigned int j = 0; j < contact.n_local(); ++j)
           if (conditions[j] == NodeCondition::normal_fixed)
             {
               const double r_n = contact.local_part(j, v)[0];
-              contact.add_reaction(j, mu * r_n * slip_direction[j], v);
+              contact.add_reaction(j,
+                                   contact.friction_coefficient(j) * r_n *
+                                     slip_direction[j],
+                                   v);
             }
       }
 
@@ -129,7 +132,7 @@ namespace FrictionalContact
       void
       add_robin(const Vector &u, const double factor, Vector &dst) const
       {
-        if (mu == 0 || dim == 2)
+        if (!friction || dim == 2)
           return;
         for (unsigned int j = 0; j < contact.n_local(); ++j)
           if (conditions[j] == NodeCondition::normal_fixed && robin[j] > 0)
@@ -148,7 +151,9 @@ namespace FrictionalContact
       const std::vector<NodeCondition>     &conditions;
       const std::vector<Tensor<1, dim>>    &slip_direction;
       const std::vector<double>            &robin;
-      const double                          mu;
+      /// Whether the slipping nodes carry their friction (mu_j of each
+      /// node's pair) or, in the frictionless start, none.
+      const bool                            friction;
     };
 
     /// The node conditions of an active-set step and what goes with them.
@@ -188,7 +193,7 @@ namespace FrictionalContact
              const Vector                      &du,
              const std::vector<Tensor<1, dim>> &r,
              const std::vector<double>         &c,
-             const double                       mu_k,
+             const bool                         friction,
              ActiveSets<dim>                   &sets)
     {
       const unsigned int n       = c.size();
@@ -202,10 +207,12 @@ namespace FrictionalContact
         const double zeta_norm = zeta.norm();
         const NodeCondition before = sets.conditions[j];
         const Tensor<1, dim> direction_before = sets.slip_direction[j];
-        sets.bound[j] = mu_k * std::max(sigma, 0.);
+        const double mu_j =
+          friction ? problem.contact.friction_coefficient(j) : 0.;
+        sets.bound[j] = mu_j * std::max(sigma, 0.);
         if (!(sigma > 0))
           sets.conditions[j] = NodeCondition::none;
-        else if (mu_k > 0 && zeta_norm < sets.bound[j])
+        else if (mu_j > 0 && zeta_norm < sets.bound[j])
           sets.conditions[j] = NodeCondition::all_fixed;
         else
           {
@@ -227,7 +234,7 @@ namespace FrictionalContact
           (sets.conditions[j] != before ||
            (before == NodeCondition::normal_fixed &&
             sets.slip_direction[j] * direction_before < 0));
-        if (mu_k > 0 && flipped && ++sets.flips[j] >= 2)
+        if (mu_j > 0 && flipped && ++sets.flips[j] >= 2)
           {
             sets.c_t[j] *= 0.1;
             sets.flips[j] = 0;
@@ -252,7 +259,7 @@ namespace FrictionalContact
       MeritAlongStep(const IncrementalProblem<dim>     &problem,
                      const std::vector<double>         &c,
                      const std::vector<double>         &c_t,
-                     const double                       mu_k,
+                     const bool                         friction,
                      const double                       mean_c,
                      const Vector                      &du_0,
                      const Vector                      &du_1,
@@ -264,7 +271,7 @@ namespace FrictionalContact
         : problem(problem)
         , c(c)
         , c_t(c_t)
-        , mu_k(mu_k)
+        , friction(friction)
         , mean_c(mean_c)
         , du_0(du_0)
         , du_1(du_1)
@@ -290,7 +297,9 @@ namespace FrictionalContact
             const Tensor<1, dim> r_j   = (1 - t) * r_0[j] + t * r_1[j];
             const double         gap   = problem.gaps[j] - u_j[0];
             const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
-            const double bound_j = mu_k * std::max(0., -(r_j[0] + c[j] * gap));
+            const double mu_j =
+              friction ? problem.contact.friction_coefficient(j) : 0.;
+            const double bound_j = mu_j * std::max(0., -(r_j[0] + c[j] * gap));
             Tensor<1, dim> z     = r_j - c_t[j] * u_j;
             z[0]                 = 0;
             if (z.norm() > bound_j)
@@ -307,7 +316,7 @@ namespace FrictionalContact
       const IncrementalProblem<dim>     &problem;
       const std::vector<double>         &c;
       const std::vector<double>         &c_t;
-      const double                       mu_k;
+      const bool                         friction;
       const double                       mean_c;
       const Vector                      &du_0;
       const Vector                      &du_1;

@@ -64,10 +64,18 @@ namespace FrictionalContact
     double
     largest_singular_value() const override;
 
+    /// One coefficient for all contacts (FCLIB files with several are
+    /// refused when read).
     const FrictionCone<dim> &
-    friction_cone() const override
+    friction_cone(const unsigned int) const override
     {
       return cone;
+    }
+
+    double
+    largest_friction_coefficient() const override
+    {
+      return cone.mu;
     }
 
   private:

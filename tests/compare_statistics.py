@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+"""Compares named columns of two statistics files row by row: the largest
+difference, relative to the largest magnitude of the column in the first
+file, must be at most the tolerance. Both files must have the same rows.
+
+usage: compare_statistics.py A B --columns "Contact force x" ... --tolerance 1e-3
+"""
+import argparse
+import sys
+parser = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+parser.add_argument("a")
+parser.add_argument("b")
+parser.add_argument("--columns", nargs="+", required=True)
+parser.add_argument("--tolerance", type=float, required=True)
+arguments = parser.parse_args()
+def table(path):
+    return [[float(x) for x in l.split()] for l in open(path) if not l.startswith("#")]
+def names(path):
+    """Column number of each name in the header ("# 17: Contact force x")."""
+    return {l[1:].split(":", 1)[1].strip(): int(l[1:].split(":", 1)[0])
+            for l in open(path) if l.startswith("#") and ":" in l}
+a, b = table(arguments.a), table(arguments.b)
+column_a, column_b = names(arguments.a), names(arguments.b)
+ok = len(a) == len(b) > 0
+print(f"{len(a)} and {len(b)} rows")
+for name in arguments.columns:
+    if name not in column_a or name not in column_b:
+        print(f"column {name}: missing")
+        ok = False
+        continue
+    x = [row[column_a[name] - 1] for row in a]
+    y = [row[column_b[name] - 1] for row in b]
+    scale = max(max(map(abs, x)), 1e-300)
+    error = max(abs(p - q) for p, q in zip(x, y)) / scale
+    passed = error <= arguments.tolerance
+    ok = ok and passed
+    print(f"column {name}: largest difference {error:.2e} of its largest value "
+          f"{scale:.4e}, {'ok' if passed else 'TOO LARGE'}")
+sys.exit(0 if ok else 1)
