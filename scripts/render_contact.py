@@ -3,7 +3,7 @@
 views side by side,
 
   1. the deformed body coloured by the von Mises stress, with the obstacle
-     drawn at its position at that time;
+     (or the rigid tool, from tool.pvd) drawn at its position at that time;
   2. the contact face (the faces whose vertices are all contact candidates)
      coloured by the contact pressure, seen from the obstacle;
   3. the same face coloured by the contact state (0 free, 1 stick, 2 slip).
@@ -277,6 +277,15 @@ def main():
         bar.ScalarBarLength = 0.6
 
     obstacle_display, obstacle = None, None
+    # A rigid tool from a surface mesh: its surface where it stands at each
+    # time (tool.pvd, written next to solution.pvd).
+    tool_pvd = os.path.join(directory, "tool.pvd")
+    if os.path.exists(tool_pvd):
+        tool_display = simple.Show(simple.PVDReader(FileName=tool_pvd), views[0])
+        tool_display.DiffuseColor = [0.45, 0.45, 0.45]
+        tool_display.AmbientColor = [0.45, 0.45, 0.45]
+        tool_display.Opacity = 0.5 if dim == 3 else 1.0
+        tool_display.LineWidth = 4.0
     files = []
     chosen = times_to_render(reader, arguments.times, touching)
     for t in chosen:

@@ -90,7 +90,10 @@ class Scene:
             self.E_star = 1 / compliance
         except KeyError:
             self.E_star = float("nan")  # bodies of their own materials: no Hertz
-        self.mu = float(p["Contact/Friction coefficient"])
+        # A pair's own coefficient (its third field) wins over the scene's.
+        first_pair = p.get("Contact/Pairs", "").split(";")[0].split(":")
+        self.mu = float(first_pair[2]) if len(first_pair) == 3 else \
+            float(p["Contact/Friction coefficient"])
         geometry = "Geometry/Ball on plate/" if two_bodies else "Geometry/Half ball/"
         self.radius = float(p.get(geometry + "Radius", "nan"))
         self.center = [0.0] * 3 if two_bodies else \

@@ -12,8 +12,10 @@ them are compared by kind, told apart by the words around them:
   contact-solver iterations       ("10 Newton iterations",
       "316 primal-dual iterations"): within a band of
       max(2, 10 % of the expected count).
-  residuals                       (after "residuals", and the sum after
-      "= " that closes a force balance line): finite, >= 0 and at most
+  residuals                       (after "residuals", the sum after
+      "= " that closes a force balance line, and the components of that
+      line no larger than ten times that sum, which are round-off):
+      finite, >= 0 (the sum's parts: in magnitude) and at most
       100 times the largest residual of the same kind in the expected
       output, or the solver tolerance where that is larger. Whether each solve
       met its tolerance is the program's own verdict: a solve that did
@@ -126,6 +128,13 @@ def classify(line):
             numbers.append(Number(text, "physical"))
         if residual_index is not None and residual_index >= 3:
             residual_index = None
+    # A force balance line's components no larger than its imbalance are
+    # round-off (a body whose forces all cancel): compared as the sum is.
+    sums = [n.value for n in numbers if n.residual_kind == "force sum"]
+    if sums:
+        for n in numbers:
+            if n.kind == "physical" and abs(n.value) <= 10 * abs(sums[0]):
+                n.kind, n.residual_kind = "residual", "force sum"
     return words, numbers
 
 

@@ -207,7 +207,7 @@ foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
               cattaneo_3d_nu_04999:cattaneo
               "hertz_two_bodies_2d:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               "hertz_two_bodies_3d.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
-              sliding_on_elastic_base:sliding)
+              sliding_on_elastic_base:sliding sliding_pair_friction:sliding)
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
   list(GET _case 1 _problem)
@@ -383,3 +383,11 @@ add_test(NAME flat_punch_2d.same_forces
               "Tangential contact force" --tolerance 1e-3)
 set_tests_properties(flat_punch_2d.same_forces PROPERTIES
   FIXTURES_REQUIRED "flat_punch_rigid_2d.mpirun=2;flat_punch_stiff_2d")
+add_test(NAME flat_punch_2d.rotated
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rigid_2d.mpirun=2/output-flat_punch_rigid_2d/statistics
+    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rotated_2d/output-flat_punch_rotated_2d/statistics
+    --columns "Contact force x" "Contact force y" "Normal contact force"
+              "Tangential contact force" --tolerance 1e-8)
+set_tests_properties(flat_punch_2d.rotated PROPERTIES
+  FIXTURES_REQUIRED "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d")

@@ -146,8 +146,10 @@ namespace FrictionalContact
     const std::filesystem::path folder =
       std::filesystem::path(file_name).parent_path();
     static const std::regex include_line(R"(^\s*include\s+(\S.*?)\s*$)");
+    // Mesh files (a geometry's, a rigid tool's) are named relative to the
+    // parameter file that sets them.
     static const std::regex mesh_file_line(
-      R"(^(\s*set\s+Mesh file\s*=\s*)([^#\s][^#]*?)(\s*(#.*)?)$)");
+      R"(^(\s*set\s+(?:Mesh file|Surface mesh)\s*=\s*)([^#\s][^#]*?)(\s*(#.*)?)$)");
     std::istringstream lines(content);
     std::string        line;
     for (unsigned int number = 1; std::getline(lines, line); ++number)

@@ -108,8 +108,8 @@ namespace FrictionalContact
       if (!std::ifstream(file_name))
         Input::fail(entry_path + "Mesh file",
                     file_name,
-                    "the file cannot be opened (paths are relative to the "
-                    "working directory)");
+                    "the file cannot be opened (a relative path is relative "
+                    "to the folder of the parameter file that sets it)");
       names = gmsh_physical_names(file_name, dim);
       for (const std::string &item : Input::split(prm.get("Boundary names"), ';'))
         {

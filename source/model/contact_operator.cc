@@ -108,10 +108,22 @@ namespace FrictionalContact
                       "'slave boundary : master boundary', e.g. "
                       "'block bottom : base top', or with the pair's "
                       "friction coefficient 'block bottom : base top : 0.3'");
-        const double pair_mu =
-          sides.size() == 2 ? mu :
-                              Input::parse_vector<1>("Contact/Pairs", sides[2])[0];
-        if (!(pair_mu >= 0))
+        double pair_mu = mu;
+        if (sides.size() == 3)
+          {
+            std::size_t end = 0;
+            try
+              {
+                pair_mu = std::stod(sides[2], &end);
+              }
+            catch (const std::exception &)
+              {
+                pair_mu = -1;
+              }
+            if (end != sides[2].size())
+              pair_mu = -1;
+          }
+        if (!(pair_mu >= 0) || !std::isfinite(pair_mu))
           Input::fail("Contact/Pairs", item,
                       "a friction coefficient >= 0 in the third field");
         cones.emplace_back(pair_mu);

@@ -73,7 +73,8 @@ namespace FrictionalContact
                     "or OBJ file. Each face's outward normal (out of the "
                     "tool) follows its vertex order by the right-hand rule, "
                     "as STL files have it.") +
-        " Paths are relative to the working directory.");
+        " A relative path is relative to the folder of the parameter file "
+        "that sets it.");
     prm.declare_entry("Reverse orientation",
                       "false",
                       Patterns::Bool(),
@@ -141,8 +142,8 @@ namespace FrictionalContact
     if (!std::ifstream(file))
       Input::fail(entry_path + "Surface mesh",
                   file,
-                  "the file cannot be opened (paths are relative to the "
-                  "working directory)");
+                  "the file cannot be opened (a relative path is relative to "
+                  "the folder of the parameter file that sets it)");
     read(file);
     if (reverse)
       for (auto &face : faces)
@@ -309,10 +310,14 @@ namespace FrictionalContact
         if (!(size > 1e-10))
           fail("face " + std::to_string(k + 1) + " at " + where(vertices[polygon[0]]) +
                " has no " + (dim == 2 ? "length" : "area"));
-        const std::size_t n_edges = dim == 2 ? 1 : polygon.size();
+        // In 2D a vertex starts one segment and ends one: the keys are
+        // (vertex, 0) for a start and (vertex, 1) for an end.
+        const std::size_t n_edges = dim == 2 ? 2 : polygon.size();
         for (std::size_t a = 0; a < n_edges; ++a)
           {
-            const auto edge = std::make_pair(polygon[a], polygon[(a + 1) % polygon.size()]);
+            const auto edge =
+              dim == 2 ? std::make_pair(polygon[a], static_cast<unsigned int>(a)) :
+                         std::make_pair(polygon[a], polygon[(a + 1) % polygon.size()]);
             const auto [it, inserted] = edges.emplace(edge, k);
             if (!inserted)
               fail("faces " + std::to_string(it->second + 1) + " and " +
@@ -402,7 +407,8 @@ namespace FrictionalContact
         DataOutBase::Patch<dim - 1, dim> patch;
         for (unsigned int v = 0; v < y.size(); ++v)
           patch.vertices[v] = y[v];
-        patch.patch_index = patches.size();
+        patch.patch_index    = patches.size();
+        patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
         patches.push_back(patch);
       }
     std::ostringstream out;

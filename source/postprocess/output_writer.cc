@@ -371,6 +371,36 @@ namespace FrictionalContact
       DataOutBase::write_pvd_record(pvd, times_and_names);
       write_file_atomically(directory + "/solution.pvd", pvd.str());
     });
+    if (contact.rigid_tool().active())
+      write_tool_files(contact.rigid_tool(), time, increment, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_tool_files(const RigidTool<dim> &tool,
+                                      const double          time,
+                                      const unsigned int    increment,
+                                      const MPI_Comm        comm) const
+  {
+    // The tool's surface where it stands, with tool.pvd beside
+    // solution.pvd: the same times, tool_NNNNN.vtu for solution_NNNNN.pvtu.
+    const auto tool_file = [](const unsigned int n) {
+      std::ostringstream name;
+      name << "solution/tool_" << std::setw(5) << std::setfill('0') << n << ".vtu";
+      return name.str();
+    };
+    std::vector<std::pair<double, std::string>> tool_times;
+    for (const auto &[t, name] : times_and_names)
+      tool_times.emplace_back(
+        t, tool_file(std::stoul(name.substr(name.rfind('_') + 1))));
+    run_on_root(comm, [&]() {
+      write_file_atomically(directory + "/" + tool_file(increment), tool.vtu(time));
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, tool_times);
+      write_file_atomically(directory + "/tool.pvd", pvd.str());
+    });
   }
 
 

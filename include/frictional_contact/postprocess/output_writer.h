@@ -67,6 +67,14 @@ namespace FrictionalContact
                     const Vector                     &u,
                     const ContactResults<dim>        &results);
 
+    /// The rigid tool's surface at @p time (solution/tool_NNNNN.vtu) and
+    /// tool.pvd, on rank 0.
+    void
+    write_tool_files(const RigidTool<dim> &tool,
+                     const double          time,
+                     const unsigned int    increment,
+                     const MPI_Comm        comm) const;
+
     void
     write_csv_files(const unsigned int          increment,
                     const ElasticBody<dim>     &body,

@@ -41,8 +41,9 @@ namespace FrictionalContact
     /// g_j: the gap of candidate j before the increment, with the obstacle
     /// already at its position at the end of the increment.
     std::vector<double> gaps;
-    /// The obstacle's displacement increment in the frame of j, tangential
-    /// components only (component 0 is zero: the gap has it).
+    /// The prescribed displacement increment of what j touches (the
+    /// obstacle, or a rigid tool) in the frame of j, tangential components
+    /// only (component 0 is zero: the gap has it).
     std::vector<Tensor<1, dim>> obstacle_slip;
 
     /// (t_n,j^T du, T_t,j^T du - obstacle's tangential motion)
