@@ -2,7 +2,7 @@
 add_test(NAME command_line/print_parameters
   COMMAND $<TARGET_FILE:contact> --print-parameters)
 set_tests_properties(command_line/print_parameters PROPERTIES
-  PASS_REGULAR_EXPRESSION "# Coulomb friction coefficient mu[^\n]*\n(#[^\n]*\n)* *set Friction coefficient = 0\n")
+  PASS_REGULAR_EXPRESSION "# Coulomb friction coefficient mu[^\n]*\n( *#[^\n]*\n)* *set Friction coefficient = 0\n")
 add_test(NAME command_line/print_parameters_of_scene
   COMMAND $<TARGET_FILE:contact> --print-parameters
           ${PROJECT_SOURCE_DIR}/parameters/example2.prm)
