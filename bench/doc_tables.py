@@ -163,7 +163,27 @@ def kanno_variants(root):
                      "solve"], body)
 
 
+def multigrid(root):
+    body = []
+    for r in rows(root, "multigrid.csv"):
+        if r["converged"] != "1":
+            body.append([r["n_y"], r["ranks"], r["path"], thousands(r["d"]), "failed"]
+                        + [""] * 6)
+            continue
+        levels = f"{r['levels']} ({thousands(r['coarse_unknowns'])})" if r["levels"] else ""
+        setup = seconds(r["multigrid_setup_s"]) if r["multigrid_setup_s"] else ""
+        body.append([r["n_y"], r["ranks"], r["path"], thousands(r["d"]), levels,
+                     r["elastic_cg_iterations"], seconds(r["elastic_solve_s"]), setup,
+                     f"{r['newton_iterations']} / {r['contact_krylov_iterations']}",
+                     r["elastic_solves_per_contact_solve"], r["kb_per_unknown"]])
+    return markdown(["N_Y", "ranks", "preconditioner", "d", "levels (coarsest unknowns)",
+                     "elastic CG iterations", "elastic solve", "multigrid set-up",
+                     "Newton / Krylov iterations", "contact solve in elastic solves",
+                     "peak kB per unknown"], body)
+
+
 TABLES = {
+    "multigrid": multigrid,
     "kanno-series": kanno_series,
     "kanno-variants": kanno_variants,
     "two-bodies": two_bodies,

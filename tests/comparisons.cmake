@@ -391,3 +391,22 @@ add_test(NAME flat_punch_2d.rotated
               "Tangential contact force" --tolerance 1e-8)
 set_tests_properties(flat_punch_2d.rotated PROPERTIES
   FIXTURES_REQUIRED "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d")
+
+# The geometric multigrid path against ML's: the same contact forces to the
+# solver tolerance (1e-8 relative to the largest force of each column).
+foreach(_case "hertz_3d_multigrid.mpirun=2:hertz_3d.mpirun=2:hertz_3d"
+              "cattaneo_2d_multigrid:cattaneo_2d:cattaneo_2d")
+  string(REPLACE ":" ";" _case ${_case})
+  list(GET _case 0 _test)
+  list(GET _case 1 _reference)
+  list(GET _case 2 _base)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _test_base ${_test})
+  add_test(NAME ${_test_base}.same_forces
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_test_base}/statistics
+      ${CMAKE_CURRENT_BINARY_DIR}/${_reference}/output-${_base}/statistics
+      --columns "Contact force x" "Contact force y" "Normal contact force"
+                "Tangential contact force" --tolerance 1e-8)
+  set_tests_properties(${_test_base}.same_forces PROPERTIES
+    FIXTURES_REQUIRED "${_test};${_reference}")
+endforeach()

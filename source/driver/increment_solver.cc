@@ -34,15 +34,45 @@ namespace FrictionalContact
     const ContactOperator<dim> &contact = model.get_contact();
     mortar.reset();
     preconditioner_basis.reset();
+    linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
+    linear_solver.set_geometric_multigrid(nullptr);
+    geometric.reset();
     if (!contact.has_pairs())
-      linear_solver.initialize(body.stiffness_matrix(),
-                               body.rigid_body_modes(),
-                               0.,
-                               body.volumetric_split());
+      {
+        linear_solver.initialize(body.stiffness_matrix(),
+                                 body.rigid_body_modes(),
+                                 0.,
+                                 body.volumetric_split());
+        if (linear_solver.wants_geometric_multigrid() &&
+            !model.get_materials().any_mean_dilatation())
+          make_geometric_multigrid(model);
+      }
     mu_pi = 0;
     if (contact.active())
       sigma_T = contact.largest_singular_value();
     contact_active = contact.active();
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::make_geometric_multigrid(const Model<dim> &model)
+  {
+    geometric = std::make_unique<GeometricMultigrid<dim>>();
+    geometric->initialize(model.get_body().get_dof_handler(),
+                          model.held_boundaries(),
+                          model.lame_parameters(),
+                          model.get_body().get_constraints(),
+                          model.get_body().stiffness_matrix(),
+                          linear_solver.multigrid_smoother_degree());
+    linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
+    linear_solver.set_geometric_multigrid(
+      [this](TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) {
+        geometric->vmult(dst, src);
+      });
+    pcout << "Geometric multigrid: " << geometric->n_levels() << " levels, "
+          << geometric->coarse_size() << " unknowns on the coarsest" << std::endl;
   }
 
 

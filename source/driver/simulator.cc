@@ -384,6 +384,10 @@ namespace FrictionalContact
           << " s; Krylov solves = "
           << Utilities::MPI::max(linear.krylov_seconds, mpi_communicator)
           << " s;";
+    if (linear.multigrid_setup_seconds > 0)
+      pcout << " multigrid set-up = "
+            << Utilities::MPI::max(linear.multigrid_setup_seconds, mpi_communicator)
+            << " s;";
     if (linear.n_factorizations > 0)
       pcout << " Cholesky factorizations = "
             << Utilities::MPI::max(linear.factorization_seconds, mpi_communicator)

@@ -150,7 +150,9 @@ namespace FrictionalContact
     FromFile<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      Triangulation<dim> mesh;
+      // The mesh's smoothing (with geometric multigrid: one level between
+      // neighbours at a vertex) survives the copy below.
+      Triangulation<dim> mesh(triangulation.get_mesh_smoothing());
       GridIn<dim>        grid_in(mesh);
       const auto         fail_to_read = [&](const std::string &reason) {
         Input::fail(entry_path + "Mesh file",

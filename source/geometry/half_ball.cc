@@ -61,9 +61,10 @@ namespace FrictionalContact
               {
                 // The octant x, y, z >= 0 turned about x onto (+, +, -),
                 // and, for one plane, also onto (+, -, -).
-                Triangulation<3> octant;
+                // (The pieces take the mesh's smoothing: copies keep it.)
+                Triangulation<3> octant(mesh.get_mesh_smoothing());
                 GridGenerator::quarter_hyper_ball(octant, Point<3>(), 1.);
-                Triangulation<3> front;
+                Triangulation<3> front(mesh.get_mesh_smoothing());
                 front.copy_triangulation(octant);
                 GridTools::transform(
                   [](const Point<3> &p) { return Point<3>(p[0], p[2], -p[1]); },
@@ -72,7 +73,7 @@ namespace FrictionalContact
                   mesh.copy_triangulation(front);
                 else
                   {
-                    Triangulation<3> back;
+                    Triangulation<3> back(mesh.get_mesh_smoothing());
                     back.copy_triangulation(octant);
                     GridTools::transform(
                       [](const Point<3> &p) { return Point<3>(p[0], -p[1], -p[2]); },
@@ -196,7 +197,9 @@ namespace FrictionalContact
     HalfBall<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      Triangulation<dim> mesh;
+      // The mesh's smoothing (with geometric multigrid: one level between
+      // neighbours at a vertex) survives the copy below.
+      Triangulation<dim> mesh(triangulation.get_mesh_smoothing());
       half_ball_mesh(mesh, center, radius, n_symmetry_planes);
       triangulation.copy_triangulation(mesh);
       attach_half_ball_manifolds(triangulation, center);

@@ -78,7 +78,9 @@ namespace FrictionalContact
     Shell<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      Triangulation<dim> mesh;
+      // The mesh's smoothing (with geometric multigrid: one level between
+      // neighbours at a vertex) survives the copy below.
+      Triangulation<dim> mesh(triangulation.get_mesh_smoothing());
       GridGenerator::quarter_hyper_shell(
         mesh, center, inner_radius, outer_radius, dim == 2 ? n_cells : 0);
       mesh.set_all_manifold_ids(0);

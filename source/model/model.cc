@@ -47,9 +47,34 @@ namespace FrictionalContact
 
 
 
+  namespace
+  {
+    /// Whether <Linear solver/Preconditioner> asks for geometric multigrid:
+    /// then the mesh keeps its levels on every rank (p4est's multigrid
+    /// hierarchy) and refines with at most one level between neighbours
+    /// at a vertex, as local smoothing needs. Other runs keep the mesh
+    /// without either.
+    bool
+    wants_mesh_levels(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      const bool levels = prm.get("Preconditioner") == "geometric multigrid";
+      prm.leave_subsection();
+      return levels;
+    }
+  } // namespace
+
+
+
   template <int dim>
   Model<dim>::Model(ParameterHandler &prm, const MPI_Comm comm)
-    : triangulation(comm)
+    : triangulation(comm,
+                    wants_mesh_levels(prm) ?
+                      Triangulation<dim>::limit_level_difference_at_vertices :
+                      Triangulation<dim>::none,
+                    wants_mesh_levels(prm) ?
+                      parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy :
+                      parallel::distributed::Triangulation<dim>::default_setting)
   {
     prm.enter_subsection("Geometry");
     geometry = PluginRegistry<Geometry::Interface<dim>>::create(prm);
@@ -190,6 +215,42 @@ namespace FrictionalContact
       }
     else
       out << "Contact: none (one linear elastic solve)" << std::endl;
+  }
+
+  template <int dim>
+  std::map<types::boundary_id, ComponentMask>
+  Model<dim>::held_boundaries() const
+  {
+    std::map<types::boundary_id, std::vector<bool>> held;
+    for (const auto *list : {&boundary_conditions->fixed_boundaries,
+                             &boundary_conditions->prescribed_boundaries})
+      for (const auto &boundary : *list)
+        {
+          std::vector<bool> &mask = held[boundary.id];
+          mask.resize(dim, false);
+          for (unsigned int c = 0; c < dim; ++c)
+            mask[c] = mask[c] || boundary.components[c];
+        }
+    std::map<types::boundary_id, ComponentMask> result;
+    for (const auto &[id, mask] : held)
+      result[id] = ComponentMask(mask);
+    return result;
+  }
+
+
+
+  template <int dim>
+  LameParameters
+  Model<dim>::lame_parameters() const
+  {
+    // From each body's stress-strain tensor: C_0011 = lambda, C_0101 = mu.
+    LameParameters lame;
+    for (const auto &[name, id] : bodies)
+      {
+        const SymmetricTensor<4, dim> &C = materials->of(id).stress_strain_tensor();
+        lame[id] = {{C[0][0][1][1], C[0][1][0][1]}};
+      }
+    return lame;
   }
 
   template class Model<2>;

@@ -15,6 +15,23 @@ namespace FrictionalContact
 {
   namespace
   {
+    /// The V-cycle given to set_geometric_multigrid() as a preconditioner.
+    struct GeometricCycle
+    {
+      const std::function<void(TrilinosWrappers::MPI::Vector &,
+                               const TrilinosWrappers::MPI::Vector &)> &cycle;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        cycle(dst, src);
+      }
+    };
+  } // namespace
+
+  namespace
+  {
     /// The operator x -> (K + sigma I) x.
     class ShiftedOperator
     {
@@ -80,7 +97,7 @@ namespace FrictionalContact
                       "CG iterations allowed per solve (>= 1).");
     prm.declare_entry("Preconditioner",
                       "auto",
-                      Patterns::Selection("auto|amg|jacobi|cholesky"),
+                      Patterns::Selection("auto|amg|jacobi|cholesky|geometric multigrid"),
                       "auto: for the primal steps (K + sigma I with sigma = "
                       "1/beta), Jacobi while max diag(K) <= Jacobi threshold "
                       "* sigma, else a sparse Cholesky factorization of K + "
@@ -89,7 +106,18 @@ namespace FrictionalContact
                       "the elastic solves AMG. amg: always Trilinos ML. "
                       "jacobi: always the diagonal. cholesky: the "
                       "factorization for every solve on one process (AMG "
-                      "on several).");
+                      "on several). geometric multigrid: for the elastic "
+                      "solves and the Newton systems a V-cycle on the levels "
+                      "of the mesh (matrix-free, Chebyshev smoothing; the "
+                      "standard element only, else AMG), for the primal "
+                      "steps as auto.");
+    prm.declare_entry("Multigrid smoother degree",
+                      "2",
+                      Patterns::Integer(1, 10),
+                      "Preconditioner = geometric multigrid: the degree of "
+                      "the Chebyshev smoother on each level (matrix-vector "
+                      "products per smoothing, before and after the coarse "
+                      "correction).");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),
@@ -173,6 +201,7 @@ namespace FrictionalContact
     max_iterations        = prm.get_integer("Maximum iterations");
     preconditioner_choice = prm.get("Preconditioner");
     jacobi_threshold      = prm.get_double("Jacobi threshold");
+    multigrid_degree      = prm.get_integer("Multigrid smoother degree");
     rebuild_factor        = prm.get_double("AMG rebuild factor");
     refactorization_factor = prm.get_double("Cholesky refactorization factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
@@ -230,6 +259,7 @@ namespace FrictionalContact
   void
   ShiftedStiffnessSolver::release()
   {
+    geometric_cycle = nullptr;
     spring_amg.clear();
     spring_amg_tried = false;
     elastic_amg.preconditioner.clear();
@@ -246,12 +276,31 @@ namespace FrictionalContact
 
 
 
+  void
+  ShiftedStiffnessSolver::set_geometric_multigrid(
+    std::function<void(Vector &, const Vector &)> v_cycle)
+  {
+    geometric_cycle = std::move(v_cycle);
+  }
+
+
+
+  bool
+  ShiftedStiffnessSolver::use_geometric_multigrid(const double sigma) const
+  {
+    return sigma == 0 && preconditioner_choice == "geometric multigrid" &&
+           geometric_cycle && volumetric_split() == nullptr;
+  }
+
+
+
   bool
   ShiftedStiffnessSolver::use_jacobi(const double sigma) const
   {
     if (preconditioner_choice == "jacobi")
       return true;
-    if (preconditioner_choice == "amg" || preconditioner_choice == "cholesky")
+    if (preconditioner_choice == "amg" || preconditioner_choice == "cholesky" ||
+        use_geometric_multigrid(sigma))
       return false;
     return max_diagonal <= jacobi_threshold * sigma;
   }
@@ -263,7 +312,9 @@ namespace FrictionalContact
   {
     // auto: for the primal steps only; cholesky: for every solve.
     const bool wanted = preconditioner_choice == "cholesky" ||
-                        (preconditioner_choice == "auto" && sigma > 0);
+                        ((preconditioner_choice == "auto" ||
+                          preconditioner_choice == "geometric multigrid") &&
+                         sigma > 0);
     if (!wanted || volumetric_split() != nullptr || !factorizable)
       return false;
     if (!cholesky.analyzed())
@@ -388,7 +439,8 @@ namespace FrictionalContact
   {
     // Its fine level smooths as ML's Chebyshev does; with another
     // smoother the Newton method keeps the AMG of K.
-    if (!spring_amg_tried && !use_jacobi(0.) && smoother_type == "Chebyshev")
+    if (!spring_amg_tried && !use_jacobi(0.) && !use_geometric_multigrid(0.) &&
+        smoother_type == "Chebyshev")
       {
         const auto &amg = amg_for(0.);
         const std::vector<std::vector<double>> used_modes(
@@ -404,7 +456,9 @@ namespace FrictionalContact
   void
   ShiftedStiffnessSolver::prepare_stiffness_preconditioner()
   {
-    if (use_jacobi(0.))
+    if (use_geometric_multigrid(0.))
+      last_linear_solve = "CG iterations (geometric multigrid)";
+    else if (use_jacobi(0.))
       {
         build_jacobi(0.);
         last_linear_solve = "CG iterations (Jacobi)";
@@ -422,7 +476,9 @@ namespace FrictionalContact
   ShiftedStiffnessSolver::precondition_stiffness(Vector       &dst,
                                                  const Vector &src) const
   {
-    if (use_jacobi(0.))
+    if (use_geometric_multigrid(0.))
+      geometric_cycle(dst, src);
+    else if (use_jacobi(0.))
       DiagonalPreconditioner(inverse_diagonal).vmult(dst, src);
     else
       elastic_amg.preconditioner.vmult(dst, src);
@@ -441,7 +497,14 @@ namespace FrictionalContact
     const ShiftedOperator op(*stiffness, sigma);
     try
       {
-        if (use_jacobi(sigma))
+        if (use_geometric_multigrid(sigma))
+          {
+            last_linear_solve = "CG iterations (geometric multigrid)";
+            const Timer timer;
+            cg.solve(op, x, b, GeometricCycle{geometric_cycle});
+            krylov_seconds += timer.wall_time();
+          }
+        else if (use_jacobi(sigma))
           {
             build_jacobi(sigma);
             last_linear_solve = "CG iterations (Jacobi)";

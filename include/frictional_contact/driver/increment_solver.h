@@ -8,6 +8,7 @@
 #include <frictional_contact/model/contact_results.h>
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/contact_solver_parameters.h>
+#include <frictional_contact/solvers/geometric_multigrid.h>
 #include <frictional_contact/solvers/shifted_stiffness_solver.h>
 
 #include <memory>
@@ -72,6 +73,7 @@ namespace FrictionalContact
     release()
     {
       linear_solver.release();
+      geometric.reset();
     }
 
     /// Prints the contact method and sigma_T.
@@ -153,6 +155,12 @@ namespace FrictionalContact
                   const bool             record_history,
                   TimerOutput           &timer);
 
+    /// The geometric multigrid of K on the mesh's levels (for
+    /// <Linear solver/Preconditioner> = geometric multigrid), given to the
+    /// linear solver.
+    void
+    make_geometric_multigrid(const Model<dim> &model);
+
     /// Results per candidate for the solution in @p outcome.
     ContactResults<dim>
     contact_results(const ContactOperator<dim>  &contact,
@@ -167,6 +175,7 @@ namespace FrictionalContact
     /// kept from increment to increment while the mesh stays.
     std::shared_ptr<MortarBasis<dim>> mortar;
     std::shared_ptr<MortarBasis<dim>> preconditioner_basis;
+    std::unique_ptr<GeometricMultigrid<dim>> geometric;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

@@ -9,6 +9,7 @@
 #include <frictional_contact/model/boundary_conditions.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/solvers/elasticity_operator.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/mesh_refinement.h>
 
@@ -103,6 +104,15 @@ namespace FrictionalContact
     {
       return *materials;
     }
+
+    /// The boundary components held in the solves: those of the fixed
+    /// and of the prescribed boundaries (whose increments are lifted).
+    std::map<types::boundary_id, ComponentMask>
+    held_boundaries() const;
+
+    /// Lame's parameters of each body (for the matrix-free stiffness).
+    LameParameters
+    lame_parameters() const;
 
     /// The bodies of the scene: name -> material id of their cells.
     const std::map<std::string, types::material_id> &

@@ -9,6 +9,7 @@
 #include <frictional_contact/solvers/spring_amg.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -82,6 +83,29 @@ namespace FrictionalContact
     replace_matrix(const TrilinosWrappers::SparseMatrix &stiffness,
                    const VolumetricSplit                &volumetric = {});
 
+    /**
+     * The geometric multigrid V-cycle of K (GeometricMultigrid, which knows
+     * the mesh this class does not), used for the elastic solves and the
+     * Newton systems when <Preconditioner> = geometric multigrid. Kept
+     * until replaced; give an empty function to drop it.
+     */
+    void
+    set_geometric_multigrid(std::function<void(Vector &, const Vector &)> v_cycle);
+
+    /// Whether <Preconditioner> asks for geometric multigrid.
+    bool
+    wants_geometric_multigrid() const
+    {
+      return preconditioner_choice == "geometric multigrid";
+    }
+
+    /// <Multigrid smoother degree>.
+    unsigned int
+    multigrid_smoother_degree() const
+    {
+      return multigrid_degree;
+    }
+
     /// Drops the preconditioners and the reference to K, before K changes
     /// (a new mesh); initialize() again before the next solve.
     void
@@ -144,6 +168,9 @@ namespace FrictionalContact
     /// How many times the AMG was set up, and the seconds ML's set-ups took.
     unsigned int n_amg_setups = 0;
     double       amg_setup_seconds = 0;
+    /// Seconds of the set-ups of the geometric multigrid (counted by
+    /// whoever makes it).
+    double multigrid_setup_seconds = 0;
     /// How many numeric Cholesky factorizations were made, and their
     /// seconds (the ordering included).
     unsigned int n_factorizations = 0;
@@ -159,6 +186,10 @@ namespace FrictionalContact
     std::string last_linear_solve;
 
   private:
+    /// Whether the solve with @p sigma takes the geometric V-cycle.
+    bool
+    use_geometric_multigrid(const double sigma) const;
+
     bool
     use_jacobi(const double sigma) const;
 
@@ -208,6 +239,7 @@ namespace FrictionalContact
     unsigned int max_iterations;
     std::string  preconditioner_choice;
     double       jacobi_threshold;
+    unsigned int multigrid_degree;
     double       rebuild_factor;
     double       refactorization_factor;
     unsigned int smoother_sweeps;
@@ -249,5 +281,7 @@ namespace FrictionalContact
     Vector diagonal;
     Vector inverse_diagonal;
     double jacobi_sigma = -1;
+
+    std::function<void(Vector &, const Vector &)> geometric_cycle;
   };
 } // namespace FrictionalContact

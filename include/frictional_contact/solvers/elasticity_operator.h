@@ -1,0 +1,63 @@
+#pragma once
+
+#include <deal.II/base/table.h>
+#include <deal.II/base/vectorization.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/operators.h>
+
+#include <array>
+#include <map>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /// Lame's lambda and the shear modulus of each body (material id): the
+  /// isotropic stress sigma = lambda tr(eps) I + 2 mu eps (in 2D lambda is
+  /// the plane-stress or plane-strain one).
+  using LameParameters = std::map<types::material_id, std::array<double, 2>>;
+
+  /**
+   * The stiffness K of linear elasticity on vector-valued Q1 elements
+   * without assembling it (deal.II's MatrixFree and FEEvaluation, as in
+   * step-37): for each batch of cells the symmetric gradient at the 2^dim
+   * Gauss points, the stress, and the integral against the test functions.
+   * Constraints (hanging nodes, held boundary components) are those of the
+   * MatrixFree object; MatrixFreeOperators::Base makes the constrained rows
+   * the identity. Works on the active mesh or on one level of the mesh
+   * hierarchy (for geometric multigrid, in float there). Owns the Lame
+   * parameters of each cell batch.
+   */
+  template <int dim, typename number>
+  class ElasticityOperator
+    : public MatrixFreeOperators::Base<dim, LinearAlgebra::distributed::Vector<number>>
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<number>;
+
+    /// Reads each cell's material id and takes its Lame parameters from
+    /// @p lame (after initialize()).
+    void
+    set_materials(const LameParameters &lame);
+
+    void
+    clear() override;
+
+    void
+    compute_diagonal() override;
+
+  private:
+    void
+    apply_add(VectorType &dst, const VectorType &src) const override;
+
+    void
+    local_apply(const MatrixFree<dim, number>               &data,
+                VectorType                                  &dst,
+                const VectorType                            &src,
+                const std::pair<unsigned int, unsigned int> &cell_range) const;
+
+    /// lambda and 2 mu of each cell batch (lane by lane).
+    Table<2, VectorizedArray<number>> moduli;
+  };
+} // namespace FrictionalContact

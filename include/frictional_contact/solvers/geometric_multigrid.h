@@ -1,0 +1,106 @@
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_constrained_dofs.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_transfer_matrix_free.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <frictional_contact/solvers/elasticity_operator.h>
+
+#include <map>
+#include <memory>
+
+namespace FrictionalContact
+{
+  /**
+   * A geometric multigrid V-cycle for the stiffness K on the levels of the
+   * p4est mesh (local smoothing, as in step-37): on each level the
+   * matrix-free ElasticityOperator in single precision, Chebyshev smoothing
+   * with its inverse diagonal, deal.II's matrix-free transfer
+   * between levels, and on the coarsest level a conjugate gradient solve
+   * to a relative 1e-3 (Jacobi-preconditioned). Applied to Trilinos
+   * vectors, as the preconditioner of CG with the assembled K; at the
+   * constrained dofs (hanging, held), whose rows of K hold only their
+   * diagonal, it divides by that diagonal. Owns the level operators, the
+   * transfer, the smoother and the cycle.
+   */
+  template <int dim>
+  class GeometricMultigrid
+  {
+  public:
+    using Vector        = TrilinosWrappers::MPI::Vector;
+    using LevelVector   = LinearAlgebra::distributed::Vector<float>;
+    using LevelOperator = ElasticityOperator<dim, float>;
+
+    /**
+     * Builds the levels of @p dof_handler (whose triangulation must have
+     * been made with its multigrid hierarchy; its level dofs are
+     * distributed here). @p held: the boundary components held at zero in
+     * the solves (fixed and prescribed boundaries); @p constraints: those
+     * of the active mesh, @p K the assembled stiffness (for its diagonal at
+     * the constrained dofs); @p smoother_degree the Chebyshev degree.
+     * Collective.
+     */
+    void
+    initialize(const DoFHandler<dim>                               &dof_handler,
+               const std::map<types::boundary_id, ComponentMask>   &held,
+               const LameParameters                                &lame,
+               const AffineConstraints<double>                     &constraints,
+               const TrilinosWrappers::SparseMatrix                &K,
+               const unsigned int                                   smoother_degree);
+
+    /// dst = one V-cycle applied to src.
+    void
+    vmult(Vector &dst, const Vector &src) const;
+
+    /// Number of levels, and the unknowns of the coarsest one.
+    unsigned int
+    n_levels() const
+    {
+      return operators.max_level() + 1;
+    }
+
+    types::global_dof_index
+    coarse_size() const
+    {
+      return coarse_unknowns;
+    }
+
+    /// Seconds initialize() took.
+    double setup_seconds = 0;
+
+  private:
+    using Smoother = PreconditionChebyshev<LevelOperator, LevelVector>;
+
+    MGConstrainedDoFs                                                 constrained_dofs;
+    MGLevelObject<LevelOperator>                                      operators;
+    MGLevelObject<MatrixFreeOperators::MGInterfaceOperator<LevelOperator>> interfaces;
+    MGTransferMatrixFree<dim, float>                                  transfer;
+    mg::SmootherRelaxation<Smoother, LevelVector>                     smoother;
+    std::unique_ptr<SolverControl>                                    coarse_control;
+    std::unique_ptr<SolverCG<LevelVector>>                            coarse_cg;
+    std::unique_ptr<MGCoarseGridIterativeSolver<LevelVector,
+                                                SolverCG<LevelVector>,
+                                                LevelOperator,
+                                                DiagonalMatrix<LevelVector>>>
+                                                                      coarse;
+    std::unique_ptr<mg::Matrix<LevelVector>>                          level_matrices, interface_matrices;
+    std::unique_ptr<Multigrid<LevelVector>>                           multigrid;
+    std::unique_ptr<PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
+                                                                      cycle;
+    /// (local index, 1 / K_ii) of each locally owned constrained dof.
+    std::vector<std::pair<unsigned int, double>>                      constrained_inverse_diagonal;
+    mutable LinearAlgebra::distributed::Vector<double>                src_copy, dst_copy;
+    types::global_dof_index                                           coarse_unknowns = 0;
+  };
+} // namespace FrictionalContact

@@ -1,0 +1,125 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+#include <frictional_contact/solvers/geometric_multigrid.h>
+
+#include <cstring>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::initialize(
+    const DoFHandler<dim>                             &dof_handler,
+    const std::map<types::boundary_id, ComponentMask> &held,
+    const LameParameters                              &lame,
+    const AffineConstraints<double>                   &constraints,
+    const TrilinosWrappers::SparseMatrix              &K,
+    const unsigned int                                 smoother_degree)
+  {
+    const Timer timer;
+    // K's rows of constrained dofs hold only their diagonal: the cycle
+    // divides by it there (the right-hand sides of PARPACK's solves are
+    // not zero at those dofs).
+    constrained_inverse_diagonal.clear();
+    const IndexSet &owned_dofs = dof_handler.locally_owned_dofs();
+    for (const auto i : owned_dofs)
+      if (constraints.is_constrained(i))
+        constrained_inverse_diagonal.emplace_back(owned_dofs.index_within_set(i),
+                                                  1. / K.diag_element(i));
+    const_cast<DoFHandler<dim> &>(dof_handler).distribute_mg_dofs();
+    const unsigned int n_level = dof_handler.get_triangulation().n_global_levels();
+
+    constrained_dofs.clear();
+    constrained_dofs.initialize(dof_handler);
+    for (const auto &[id, components] : held)
+      constrained_dofs.make_zero_boundary_constraints(dof_handler, {id}, components);
+
+    // The operator of each level on its own MatrixFree data, with the
+    // level's held dofs as constraints.
+    operators.resize(0, n_level - 1);
+    const MappingQ1<dim> mapping;
+    for (unsigned int level = 0; level < n_level; ++level)
+      {
+        AffineConstraints<double> level_constraints;
+        level_constraints.reinit(
+          DoFTools::extract_locally_relevant_level_dofs(dof_handler, level));
+        level_constraints.add_lines(constrained_dofs.get_boundary_indices(level));
+        level_constraints.close();
+        typename MatrixFree<dim, float>::AdditionalData data;
+        data.tasks_parallel_scheme = MatrixFree<dim, float>::AdditionalData::none;
+        data.mapping_update_flags  = update_gradients | update_JxW_values;
+        data.mg_level              = level;
+        auto storage               = std::make_shared<MatrixFree<dim, float>>();
+        storage->reinit(mapping, dof_handler, level_constraints, QGauss<1>(2), data);
+        operators[level].initialize(storage, constrained_dofs, level);
+        operators[level].set_materials(lame);
+        operators[level].compute_diagonal();
+      }
+    coarse_unknowns = operators[0].m();
+
+    transfer.clear();
+    transfer.initialize_constraints(constrained_dofs);
+    transfer.build(dof_handler);
+
+    // Chebyshev on the upper part of each level's spectrum (1/15 of the
+    // largest eigenvalue up), which CG estimates in 10 iterations.
+    MGLevelObject<typename Smoother::AdditionalData> smoother_data(0, n_level - 1);
+    for (unsigned int level = 0; level < n_level; ++level)
+      {
+        smoother_data[level].smoothing_range     = 15.;
+        smoother_data[level].degree              = smoother_degree;
+        smoother_data[level].eig_cg_n_iterations = 10;
+        smoother_data[level].preconditioner =
+          operators[level].get_matrix_diagonal_inverse();
+      }
+    smoother.initialize(operators, smoother_data);
+
+    coarse_control = std::make_unique<ReductionControl>(10000, 1e-20, 1e-3, false, false);
+    coarse_cg = std::make_unique<SolverCG<LevelVector>>(*coarse_control);
+    coarse = std::make_unique<MGCoarseGridIterativeSolver<LevelVector,
+                                                          SolverCG<LevelVector>,
+                                                          LevelOperator,
+                                                          DiagonalMatrix<LevelVector>>>(
+      *coarse_cg, operators[0], *operators[0].get_matrix_diagonal_inverse());
+
+    interfaces.resize(0, n_level - 1);
+    for (unsigned int level = 0; level < n_level; ++level)
+      interfaces[level].initialize(operators[level]);
+    level_matrices     = std::make_unique<mg::Matrix<LevelVector>>(operators);
+    interface_matrices = std::make_unique<mg::Matrix<LevelVector>>(interfaces);
+    multigrid          = std::make_unique<Multigrid<LevelVector>>(
+      *level_matrices, *coarse, transfer, smoother, smoother);
+    multigrid->set_edge_matrices(*interface_matrices, *interface_matrices);
+    cycle = std::make_unique<PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
+      dof_handler, *multigrid, transfer);
+
+    const IndexSet owned    = dof_handler.locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    src_copy.reinit(owned, relevant, dof_handler.get_communicator());
+    dst_copy.reinit(owned, relevant, dof_handler.get_communicator());
+    setup_seconds = timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::vmult(Vector &dst, const Vector &src) const
+  {
+    // Both vectors hold the locally owned entries in the same order.
+    const std::size_t n = src_copy.locally_owned_size();
+    std::memcpy(src_copy.begin(), src.begin(), n * sizeof(double));
+    cycle->vmult(dst_copy, src_copy);
+    std::memcpy(dst.begin(), dst_copy.begin(), n * sizeof(double));
+    double *values = dst.begin();
+    for (const auto &[index, inverse] : constrained_inverse_diagonal)
+      values[index] = inverse * src.begin()[index];
+  }
+
+  template class GeometricMultigrid<2>;
+  template class GeometricMultigrid<3>;
+} // namespace FrictionalContact
