@@ -127,7 +127,7 @@ namespace
     ShiftedStiffnessSolver linear_solver(prm);
     linear_solver.initialize(K, body.rigid_body_modes());
     linear_solver.prepare_stiffness_preconditioner();
-    SpringAMG &spring_amg = linear_solver.spring_preconditioner();
+    auto &spring_amg = dynamic_cast<SpringAMG &>(linear_solver.spring_preconditioner());
 
     // The springs of every candidate sticking: 10 c_j in all directions.
     const std::vector<double> c = contact.normal_stiffness(K);

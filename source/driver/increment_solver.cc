@@ -34,9 +34,9 @@ namespace FrictionalContact
     const ContactOperator<dim> &contact = model.get_contact();
     mortar.reset();
     preconditioner_basis.reset();
-    linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
-    linear_solver.set_geometric_multigrid(nullptr);
+    linear_solver.set_geometric_multigrid(nullptr, nullptr);
     geometric.reset();
+    geometric_with_springs.reset();
     if (!contact.has_pairs())
       {
         linear_solver.initialize(body.stiffness_matrix(),
@@ -59,18 +59,23 @@ namespace FrictionalContact
   void
   IncrementSolver<dim>::make_geometric_multigrid(const Model<dim> &model)
   {
-    geometric = std::make_unique<GeometricMultigrid<dim>>();
-    geometric->initialize(model.get_body().get_dof_handler(),
-                          model.held_boundaries(),
-                          model.lame_parameters(),
-                          model.get_body().get_constraints(),
-                          model.get_body().stiffness_matrix(),
-                          linear_solver.multigrid_smoother_degree());
-    linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
-    linear_solver.set_geometric_multigrid(
-      [this](TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) {
-        geometric->vmult(dst, src);
-      });
+    const auto make = [&]() {
+      auto multigrid = std::make_unique<GeometricMultigrid<dim>>();
+      multigrid->initialize(model.get_body().get_dof_handler(),
+                            model.held_boundaries(),
+                            model.lame_parameters(),
+                            model.get_body().get_constraints(),
+                            model.get_body().stiffness_matrix(),
+                            linear_solver.multigrid_smoother_degree());
+      linear_solver.multigrid_setup_seconds += multigrid->setup_seconds;
+      return multigrid;
+    };
+    geometric = make();
+    // The Newton systems' springs change the levels' operators: they get
+    // a multigrid of their own.
+    if (model.get_contact().active())
+      geometric_with_springs = make();
+    linear_solver.set_geometric_multigrid(geometric.get(), geometric_with_springs.get());
     pcout << "Geometric multigrid: " << geometric->n_levels() << " levels, "
           << geometric->coarse_size() << " unknowns on the coarsest" << std::endl;
   }

@@ -56,9 +56,19 @@ namespace FrictionalContact
 
   template <int dim, typename number>
   void
+  ElasticityOperator<dim, number>::set_springs(std::vector<Spring> new_springs)
+  {
+    springs = std::move(new_springs);
+  }
+
+
+
+  template <int dim, typename number>
+  void
   ElasticityOperator<dim, number>::clear()
   {
     moduli.reinit(0, 0);
+    springs.clear();
     MatrixFreeOperators::Base<dim, VectorType>::clear();
   }
 
@@ -69,6 +79,11 @@ namespace FrictionalContact
   ElasticityOperator<dim, number>::apply_add(VectorType &dst, const VectorType &src) const
   {
     this->data->cell_loop(&ElasticityOperator::local_apply, this, dst, src);
+    for (const Spring &spring : springs)
+      for (unsigned int a = 0; a < spring.rows.size(); ++a)
+        for (unsigned int b = 0; b < spring.rows.size(); ++b)
+          dst.local_element(spring.rows[a]) +=
+            spring.values[a * spring.rows.size() + b] * src.local_element(spring.rows[b]);
   }
 
 
@@ -108,6 +123,10 @@ namespace FrictionalContact
         phi.integrate(EvaluationFlags::gradients);
       };
     MatrixFreeTools::compute_diagonal(*this->data, inverse, cell_operation);
+    for (const Spring &spring : springs)
+      for (unsigned int a = 0; a < spring.rows.size(); ++a)
+        inverse.local_element(spring.rows[a]) +=
+          spring.values[a * spring.rows.size() + a];
     this->set_constrained_entries_to_one(inverse);
     for (number &entry : inverse)
       entry = entry > 0 ? number(1) / entry : number(1);

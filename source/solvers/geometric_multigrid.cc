@@ -6,6 +6,7 @@
 
 #include <frictional_contact/solvers/geometric_multigrid.h>
 
+#include <cmath>
 #include <cstring>
 
 namespace FrictionalContact
@@ -65,8 +66,33 @@ namespace FrictionalContact
     transfer.initialize_constraints(constrained_dofs);
     transfer.build(dof_handler);
 
+    interfaces.resize(0, n_level - 1);
+    for (unsigned int level = 0; level < n_level; ++level)
+      interfaces[level].initialize(operators[level]);
+    level_matrices     = std::make_unique<mg::Matrix<LevelVector>>(operators);
+    interface_matrices = std::make_unique<mg::Matrix<LevelVector>>(interfaces);
+    this->dof_handler     = &dof_handler;
+    this->smoother_degree = smoother_degree;
+    level_has_springs.assign(n_level, false);
+    active_to_level.clear();
+    build_cycle();
+
+    const IndexSet owned    = dof_handler.locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    src_copy.reinit(owned, relevant, dof_handler.get_communicator());
+    dst_copy.reinit(owned, relevant, dof_handler.get_communicator());
+    setup_seconds = timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::build_cycle()
+  {
     // Chebyshev on the upper part of each level's spectrum (1/15 of the
     // largest eigenvalue up), which CG estimates in 10 iterations.
+    const unsigned int n_level = operators.max_level() + 1;
     MGLevelObject<typename Smoother::AdditionalData> smoother_data(0, n_level - 1);
     for (unsigned int level = 0; level < n_level; ++level)
       {
@@ -79,29 +105,116 @@ namespace FrictionalContact
     smoother.initialize(operators, smoother_data);
 
     coarse_control = std::make_unique<ReductionControl>(10000, 1e-20, 1e-3, false, false);
-    coarse_cg = std::make_unique<SolverCG<LevelVector>>(*coarse_control);
+    coarse_cg      = std::make_unique<SolverCG<LevelVector>>(*coarse_control);
     coarse = std::make_unique<MGCoarseGridIterativeSolver<LevelVector,
                                                           SolverCG<LevelVector>,
                                                           LevelOperator,
                                                           DiagonalMatrix<LevelVector>>>(
       *coarse_cg, operators[0], *operators[0].get_matrix_diagonal_inverse());
-
-    interfaces.resize(0, n_level - 1);
-    for (unsigned int level = 0; level < n_level; ++level)
-      interfaces[level].initialize(operators[level]);
-    level_matrices     = std::make_unique<mg::Matrix<LevelVector>>(operators);
-    interface_matrices = std::make_unique<mg::Matrix<LevelVector>>(interfaces);
-    multigrid          = std::make_unique<Multigrid<LevelVector>>(
+    multigrid = std::make_unique<Multigrid<LevelVector>>(
       *level_matrices, *coarse, transfer, smoother, smoother);
     multigrid->set_edge_matrices(*interface_matrices, *interface_matrices);
     cycle = std::make_unique<PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
-      dof_handler, *multigrid, transfer);
+      *dof_handler, *multigrid, transfer);
+  }
 
-    const IndexSet owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
-    src_copy.reinit(owned, relevant, dof_handler.get_communicator());
-    dst_copy.reinit(owned, relevant, dof_handler.get_communicator());
-    setup_seconds = timer.wall_time();
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::map_active_to_level_dofs()
+  {
+    // For each dof at a vertex of an owned active cell: its dof on the
+    // cell's level, then on each coarser level whose parent cell has the
+    // same vertex.
+    for (const auto &cell : dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const types::global_dof_index dof = cell->vertex_dof_index(v, c);
+              if (active_to_level.count(dof) > 0)
+                continue;
+              std::vector<std::pair<unsigned int, types::global_dof_index>> &chain =
+                active_to_level[dof];
+              typename DoFHandler<dim>::level_cell_iterator on_level(
+                &dof_handler->get_triangulation(), cell->level(), cell->index(), dof_handler);
+              unsigned int vertex = v;
+              while (true)
+                {
+                  chain.emplace_back(on_level->level(),
+                                     on_level->mg_vertex_dof_index(on_level->level(), vertex, c));
+                  if (on_level->level() == 0)
+                    break;
+                  const auto   parent = on_level->parent();
+                  unsigned int found  = numbers::invalid_unsigned_int;
+                  for (const unsigned int w : parent->vertex_indices())
+                    if (parent->vertex_index(w) == on_level->vertex_index(vertex))
+                      found = w;
+                  if (found == numbers::invalid_unsigned_int)
+                    break;
+                  on_level = parent;
+                  vertex   = found;
+                }
+            }
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::set_springs(const std::vector<NodalBlock> &springs)
+  {
+    if (active_to_level.empty())
+      map_active_to_level_dofs();
+    const unsigned int n_level = operators.max_level() + 1;
+    std::vector<std::vector<typename LevelOperator::Spring>> per_level(n_level);
+    // A spring goes to the level of its node's active cells and to each
+    // coarser level where the node is a vertex, scaled there as the
+    // diagonal of K grows with the cells (2^(dim-2) per level).
+    for (const NodalBlock &block : springs)
+      for (unsigned int depth = 0;; ++depth)
+        {
+          typename LevelOperator::Spring spring;
+          unsigned int                   level = 0;
+          bool                           found = true;
+          for (const auto dof : block.dofs)
+            {
+              const auto it = active_to_level.find(dof);
+              if (it == active_to_level.end() || it->second.size() <= depth)
+                {
+                  found = false;
+                  break;
+                }
+              level = it->second[depth].first;
+              const auto &partitioner =
+                operators[level].get_matrix_free()->get_vector_partitioner();
+              if (!partitioner->in_local_range(it->second[depth].second))
+                {
+                  found = false;
+                  break;
+                }
+              spring.rows.push_back(partitioner->global_to_local(it->second[depth].second));
+            }
+          if (!found)
+            break;
+          const double scale = std::pow(2., (dim - 2.) * depth);
+          for (const double value : block.values)
+            spring.values.push_back(scale * value);
+          per_level[level].push_back(std::move(spring));
+        }
+    for (unsigned int level = 0; level < n_level; ++level)
+      {
+        const bool has_springs =
+          Utilities::MPI::logical_or(!per_level[level].empty(),
+                                     dof_handler->get_communicator());
+        if (!has_springs && !level_has_springs[level])
+          continue;
+        operators[level].set_springs(std::move(per_level[level]));
+        operators[level].compute_diagonal();
+        level_has_springs[level] = has_springs;
+      }
+    build_cycle();
   }
 
 

@@ -18,14 +18,13 @@ namespace FrictionalContact
     /// The V-cycle given to set_geometric_multigrid() as a preconditioner.
     struct GeometricCycle
     {
-      const std::function<void(TrilinosWrappers::MPI::Vector &,
-                               const TrilinosWrappers::MPI::Vector &)> &cycle;
+      const SpringPreconditioner &cycle;
 
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        cycle(dst, src);
+        cycle.vmult(dst, src);
       }
     };
   } // namespace
@@ -259,7 +258,8 @@ namespace FrictionalContact
   void
   ShiftedStiffnessSolver::release()
   {
-    geometric_cycle = nullptr;
+    geometric_cycle        = nullptr;
+    geometric_with_springs = nullptr;
     spring_amg.clear();
     spring_amg_tried = false;
     elastic_amg.preconditioner.clear();
@@ -277,10 +277,11 @@ namespace FrictionalContact
 
 
   void
-  ShiftedStiffnessSolver::set_geometric_multigrid(
-    std::function<void(Vector &, const Vector &)> v_cycle)
+  ShiftedStiffnessSolver::set_geometric_multigrid(const SpringPreconditioner *of_stiffness,
+                                                  SpringPreconditioner *with_springs)
   {
-    geometric_cycle = std::move(v_cycle);
+    geometric_cycle        = of_stiffness;
+    geometric_with_springs = with_springs;
   }
 
 
@@ -289,7 +290,7 @@ namespace FrictionalContact
   ShiftedStiffnessSolver::use_geometric_multigrid(const double sigma) const
   {
     return sigma == 0 && preconditioner_choice == "geometric multigrid" &&
-           geometric_cycle && volumetric_split() == nullptr;
+           geometric_cycle != nullptr && volumetric_split() == nullptr;
   }
 
 
@@ -434,9 +435,11 @@ namespace FrictionalContact
 
 
 
-  SpringAMG &
+  SpringPreconditioner &
   ShiftedStiffnessSolver::spring_preconditioner()
   {
+    if (use_geometric_multigrid(0.) && geometric_with_springs != nullptr)
+      return *geometric_with_springs;
     // Its fine level smooths as ML's Chebyshev does; with another
     // smoother the Newton method keeps the AMG of K.
     if (!spring_amg_tried && !use_jacobi(0.) && !use_geometric_multigrid(0.) &&
@@ -477,7 +480,7 @@ namespace FrictionalContact
                                                  const Vector &src) const
   {
     if (use_geometric_multigrid(0.))
-      geometric_cycle(dst, src);
+      geometric_cycle->vmult(dst, src);
     else if (use_jacobi(0.))
       DiagonalPreconditioner(inverse_diagonal).vmult(dst, src);
     else
@@ -501,7 +504,7 @@ namespace FrictionalContact
           {
             last_linear_solve = "CG iterations (geometric multigrid)";
             const Timer timer;
-            cg.solve(op, x, b, GeometricCycle{geometric_cycle});
+            cg.solve(op, x, b, GeometricCycle{*geometric_cycle});
             krylov_seconds += timer.wall_time();
           }
         else if (use_jacobi(sigma))

@@ -74,6 +74,7 @@ namespace FrictionalContact
     {
       linear_solver.release();
       geometric.reset();
+      geometric_with_springs.reset();
     }
 
     /// Prints the contact method and sigma_T.
@@ -175,7 +176,10 @@ namespace FrictionalContact
     /// kept from increment to increment while the mesh stays.
     std::shared_ptr<MortarBasis<dim>> mortar;
     std::shared_ptr<MortarBasis<dim>> preconditioner_basis;
+    /// The geometric multigrid of K, and a second one for the springs of
+    /// the Newton systems (both on the mesh's levels, matrix-free).
     std::unique_ptr<GeometricMultigrid<dim>> geometric;
+    std::unique_ptr<GeometricMultigrid<dim>> geometric_with_springs;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <vector>
 
 namespace FrictionalContact
 {
@@ -26,8 +27,9 @@ namespace FrictionalContact
    * Constraints (hanging nodes, held boundary components) are those of the
    * MatrixFree object; MatrixFreeOperators::Base makes the constrained rows
    * the identity. Works on the active mesh or on one level of the mesh
-   * hierarchy (for geometric multigrid, in float there). Owns the Lame
-   * parameters of each cell batch.
+   * hierarchy (for geometric multigrid, in float there), optionally with
+   * springs on single nodes (the node conditions of a Newton system).
+   * Owns the Lame parameters of each cell batch and the springs.
    */
   template <int dim, typename number>
   class ElasticityOperator
@@ -40,6 +42,19 @@ namespace FrictionalContact
     /// @p lame (after initialize()).
     void
     set_materials(const LameParameters &lame);
+
+    /// A symmetric block on locally owned entries of the vector (their
+    /// local indices), row-major.
+    struct Spring
+    {
+      std::vector<unsigned int> rows;
+      std::vector<number>       values;
+    };
+
+    /// The operator is K + the sum of @p springs from now on (its diagonal
+    /// too, at the next compute_diagonal()).
+    void
+    set_springs(std::vector<Spring> springs);
 
     void
     clear() override;
@@ -59,5 +74,6 @@ namespace FrictionalContact
 
     /// lambda and 2 mu of each cell batch (lane by lane).
     Table<2, VectorizedArray<number>> moduli;
+    std::vector<Spring>               springs;
   };
 } // namespace FrictionalContact

@@ -16,6 +16,9 @@
 #include <deal.II/multigrid/multigrid.h>
 
 #include <frictional_contact/solvers/elasticity_operator.h>
+#include <frictional_contact/solvers/spring_preconditioner.h>
+
+#include <unordered_map>
 
 #include <map>
 #include <memory>
@@ -35,7 +38,7 @@ namespace FrictionalContact
    * transfer, the smoother and the cycle.
    */
   template <int dim>
-  class GeometricMultigrid
+  class GeometricMultigrid : public SpringPreconditioner
   {
   public:
     using Vector        = TrilinosWrappers::MPI::Vector;
@@ -59,9 +62,27 @@ namespace FrictionalContact
                const TrilinosWrappers::SparseMatrix                &K,
                const unsigned int                                   smoother_degree);
 
+    bool
+    initialized() const override
+    {
+      return cycle != nullptr;
+    }
+
+    /**
+     * The cycle for K + the sum of @p springs from now on: each spring goes
+     * to the level of the active cells at its node (the finest level of a
+     * uniformly refined mesh), where it enters the operator, its diagonal
+     * and so the smoother, and to each coarser level where its node is a
+     * vertex, scaled by 2^(dim-2) per level as K's diagonal grows. A
+     * spring on dofs another rank owns on a level is left out there (it
+     * only weakens the preconditioner). Collective.
+     */
+    void
+    set_springs(const std::vector<NodalBlock> &springs) override;
+
     /// dst = one V-cycle applied to src.
     void
-    vmult(Vector &dst, const Vector &src) const;
+    vmult(Vector &dst, const Vector &src) const override;
 
     /// Number of levels, and the unknowns of the coarsest one.
     unsigned int
@@ -81,6 +102,26 @@ namespace FrictionalContact
 
   private:
     using Smoother = PreconditionChebyshev<LevelOperator, LevelVector>;
+
+    /// (Re)makes the smoothers, the coarse solver and the cycle from the
+    /// level operators and their diagonals.
+    void
+    build_cycle();
+
+    /// Fills active_to_level (for springs).
+    void
+    map_active_to_level_dofs();
+
+    const DoFHandler<dim>                                            *dof_handler = nullptr;
+    unsigned int                                                      smoother_degree = 2;
+    /// For each locally owned active dof at a vertex: its (level, level
+    /// dof) on the level of its cells and on each coarser level that has
+    /// the vertex.
+    std::unordered_map<types::global_dof_index,
+                       std::vector<std::pair<unsigned int, types::global_dof_index>>>
+      active_to_level;
+    /// The levels that have springs now.
+    std::vector<bool>                                                 level_has_springs;
 
     MGConstrainedDoFs                                                 constrained_dofs;
     MGLevelObject<LevelOperator>                                      operators;

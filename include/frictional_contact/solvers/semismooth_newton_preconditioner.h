@@ -12,7 +12,8 @@ namespace FrictionalContact
     /**
      * The preconditioner M of the Newton systems (the Krylov solver applies
      * P M P). With node conditions: the AMG of K plus springs that stand
-     * for the conditions (SpringAMG), stiff (spring_factor c_j) in each
+     * for the conditions (SpringAMG; or the geometric multigrid with the
+     * springs on its levels), stiff (spring_factor c_j) in each
      * direction a condition holds, and the Robin term kappa Q across the
      * slip direction of a slipping node; it is made again only when a
      * node's spring changes by more than a tenth. Without (or where the
@@ -42,7 +43,7 @@ namespace FrictionalContact
       {
         if (!with_conditions)
           return;
-        SpringAMG &candidate = linear_solver.spring_preconditioner();
+        SpringPreconditioner &candidate = linear_solver.spring_preconditioner();
         NodalBlock probe;
         const bool usable =
           candidate.initialized() &&
@@ -125,7 +126,7 @@ namespace FrictionalContact
 
       ShiftedStiffnessSolver     &linear_solver;
       const ContactMap<dim>      &contact;
-      SpringAMG                  *amg;
+      SpringPreconditioner       *amg;
       std::vector<Tensor<2, dim>> built;
     };
   } // namespace SemismoothNewton

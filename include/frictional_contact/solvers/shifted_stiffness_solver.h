@@ -9,7 +9,6 @@
 #include <frictional_contact/solvers/spring_amg.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,13 +83,15 @@ namespace FrictionalContact
                    const VolumetricSplit                &volumetric = {});
 
     /**
-     * The geometric multigrid V-cycle of K (GeometricMultigrid, which knows
-     * the mesh this class does not), used for the elastic solves and the
-     * Newton systems when <Preconditioner> = geometric multigrid. Kept
-     * until replaced; give an empty function to drop it.
+     * The geometric multigrid V-cycles (GeometricMultigrid, which knows the
+     * mesh this class does not) used when <Preconditioner> = geometric
+     * multigrid: @p of_stiffness for the elastic solves, @p with_springs
+     * for the Newton systems (spring_preconditioner()). They must outlive
+     * their use; give nullptr to drop them.
      */
     void
-    set_geometric_multigrid(std::function<void(Vector &, const Vector &)> v_cycle);
+    set_geometric_multigrid(const SpringPreconditioner *of_stiffness,
+                            SpringPreconditioner       *with_springs);
 
     /// Whether <Preconditioner> asks for geometric multigrid.
     bool
@@ -148,13 +149,14 @@ namespace FrictionalContact
     }
 
     /**
-     * The AMG of K plus springs (SpringAMG), taken from the AMG of K
-     * (built first if needed) and kept until release(); not initialized()
-     * when <Linear solver/Preconditioner> makes K's preconditioner Jacobi
-     * or the AMG smoother is not Chebyshev (its fine level smooths as
-     * ML's Chebyshev does).
+     * The preconditioner of K plus springs: the geometric multigrid's
+     * with springs if one was given, else the AMG (SpringAMG) taken from
+     * the AMG of K (built first if needed) and kept until release(); not
+     * initialized() when <Linear solver/Preconditioner> makes K's
+     * preconditioner Jacobi or the AMG smoother is not Chebyshev (its fine
+     * level smooths as ML's Chebyshev does).
      */
-    SpringAMG &
+    SpringPreconditioner &
     spring_preconditioner();
 
     /// Seconds of AMG set-ups: ML's of K and the Newton preconditioner's
@@ -282,6 +284,7 @@ namespace FrictionalContact
     Vector inverse_diagonal;
     double jacobi_sigma = -1;
 
-    std::function<void(Vector &, const Vector &)> geometric_cycle;
+    const SpringPreconditioner *geometric_cycle        = nullptr;
+    SpringPreconditioner       *geometric_with_springs = nullptr;
   };
 } // namespace FrictionalContact

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/solvers/nodal_block.h>
+#include <frictional_contact/solvers/spring_preconditioner.h>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -45,13 +46,13 @@ namespace FrictionalContact
    * own. Owns the copies of P, A_1 and K, the coarse hierarchy and the
    * springs.
    */
-  class SpringAMG
+  class SpringAMG : public SpringPreconditioner
   {
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
     SpringAMG();
-    ~SpringAMG();
+    ~SpringAMG() override;
 
     /**
      * Takes the hierarchy of @p amg_of_K (Trilinos ML, built on @p K, which
@@ -68,7 +69,7 @@ namespace FrictionalContact
 
     /// Whether initialize() succeeded (ML made at least two levels).
     bool
-    initialized() const
+    initialized() const override
     {
       return coarse_matrix != nullptr;
     }
@@ -87,11 +88,11 @@ namespace FrictionalContact
 
     /// Makes the cycle for K + the sum of @p springs. Collective.
     void
-    set_springs(const std::vector<NodalBlock> &springs);
+    set_springs(const std::vector<NodalBlock> &springs) override;
 
     /// dst = one V-cycle for (K + S) dst = src, from dst = 0.
     void
-    vmult(Vector &dst, const Vector &src) const;
+    vmult(Vector &dst, const Vector &src) const override;
 
     /// Seconds spent in initialize() and set_springs(), all of them (clear()
     /// keeps the count).
