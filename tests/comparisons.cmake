@@ -372,41 +372,35 @@ foreach(_case
     FIXTURES_REQUIRED ${_test})
 endforeach()
 
+# Contact forces of two runs' statistics files, column by column, to a
+# tolerance relative to each column's largest value (compare_statistics.py).
+function(contact_compare_statistics _name _setup_tests _a _b _tolerance)
+  add_test(NAME ${_name}
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
+      ${_a} ${_b} --columns "Contact force x" "Contact force y"
+      "Normal contact force" "Tangential contact force" --tolerance ${_tolerance})
+  set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED "${_setup_tests}")
+endfunction()
+
 # A rigid tool from a surface mesh against the same punch as an elastic
 # block 1e6 times stiffer: the same forces to 1e-3 (measured 1.8e-4 with
-# these increments; it halves with them).
-add_test(NAME flat_punch_2d.same_forces
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
-    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rigid_2d.mpirun=2/output-flat_punch_rigid_2d/statistics
-    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_stiff_2d/output-flat_punch_stiff_2d/statistics
-    --columns "Contact force x" "Contact force y" "Normal contact force"
-              "Tangential contact force" --tolerance 1e-3)
-set_tests_properties(flat_punch_2d.same_forces PROPERTIES
-  FIXTURES_REQUIRED "flat_punch_rigid_2d.mpirun=2;flat_punch_stiff_2d")
-add_test(NAME flat_punch_2d.rotated
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
-    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rigid_2d.mpirun=2/output-flat_punch_rigid_2d/statistics
-    ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rotated_2d/output-flat_punch_rotated_2d/statistics
-    --columns "Contact force x" "Contact force y" "Normal contact force"
-              "Tangential contact force" --tolerance 1e-8)
-set_tests_properties(flat_punch_2d.rotated PROPERTIES
-  FIXTURES_REQUIRED "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d")
+# these increments; it halves with them). Turned by pi and reversed: the
+# same tool, the same forces to the solver tolerance.
+set(_punch ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rigid_2d.mpirun=2/output-flat_punch_rigid_2d/statistics)
+contact_compare_statistics(flat_punch_2d.same_forces
+  "flat_punch_rigid_2d.mpirun=2;flat_punch_stiff_2d" ${_punch}
+  ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_stiff_2d/output-flat_punch_stiff_2d/statistics 1e-3)
+contact_compare_statistics(flat_punch_2d.rotated
+  "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d" ${_punch}
+  ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rotated_2d/output-flat_punch_rotated_2d/statistics 1e-8)
 
 # The geometric multigrid path against ML's: the same contact forces to the
 # solver tolerance (1e-8 relative to the largest force of each column).
-foreach(_case "hertz_3d_multigrid.mpirun=2:hertz_3d.mpirun=2:hertz_3d"
-              "cattaneo_2d_multigrid:cattaneo_2d:cattaneo_2d")
-  string(REPLACE ":" ";" _case ${_case})
-  list(GET _case 0 _test)
-  list(GET _case 1 _reference)
-  list(GET _case 2 _base)
-  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _test_base ${_test})
-  add_test(NAME ${_test_base}.same_forces
-    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_statistics.py
-      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_test_base}/statistics
-      ${CMAKE_CURRENT_BINARY_DIR}/${_reference}/output-${_base}/statistics
-      --columns "Contact force x" "Contact force y" "Normal contact force"
-                "Tangential contact force" --tolerance 1e-8)
-  set_tests_properties(${_test_base}.same_forces PROPERTIES
-    FIXTURES_REQUIRED "${_test};${_reference}")
-endforeach()
+contact_compare_statistics(hertz_3d_multigrid.same_forces
+  "hertz_3d_multigrid.mpirun=2;hertz_3d.mpirun=2"
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d_multigrid.mpirun=2/output-hertz_3d_multigrid/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d.mpirun=2/output-hertz_3d/statistics 1e-8)
+contact_compare_statistics(cattaneo_2d_multigrid.same_forces
+  "cattaneo_2d_multigrid;cattaneo_2d"
+  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d_multigrid/output-cattaneo_2d_multigrid/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d/output-cattaneo_2d/statistics 1e-8)
