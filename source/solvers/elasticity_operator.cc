@@ -38,6 +38,7 @@ namespace FrictionalContact
     const MatrixFree<dim, number> &data      = *this->data;
     const unsigned int             n_batches = data.n_cell_batches();
     moduli.reinit(n_batches, 2);
+    stiffness_diagonal.reinit(0);
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         const unsigned int filled = data.n_active_entries_per_cell_batch(batch);
@@ -69,6 +70,7 @@ namespace FrictionalContact
   {
     moduli.reinit(0, 0);
     springs.clear();
+    stiffness_diagonal.reinit(0);
     MatrixFreeOperators::Base<dim, VectorType>::clear();
   }
 
@@ -112,17 +114,23 @@ namespace FrictionalContact
   void
   ElasticityOperator<dim, number>::compute_diagonal()
   {
+    // K's diagonal once (it costs about as many operator applications as a
+    // cell has dofs), the springs' added at every call.
+    if (stiffness_diagonal.size() == 0)
+      {
+        this->data->initialize_dof_vector(stiffness_diagonal);
+        const std::function<void(FEEvaluation<dim, 1, 2, dim, number> &)> cell_operation =
+          [&](FEEvaluation<dim, 1, 2, dim, number> &phi) {
+            const unsigned int batch = phi.get_current_cell_index();
+            phi.evaluate(EvaluationFlags::gradients);
+            submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
+            phi.integrate(EvaluationFlags::gradients);
+          };
+        MatrixFreeTools::compute_diagonal(*this->data, stiffness_diagonal, cell_operation);
+      }
     this->inverse_diagonal_entries.reset(new DiagonalMatrix<VectorType>());
     VectorType &inverse = this->inverse_diagonal_entries->get_vector();
-    this->data->initialize_dof_vector(inverse);
-    const std::function<void(FEEvaluation<dim, 1, 2, dim, number> &)> cell_operation =
-      [&](FEEvaluation<dim, 1, 2, dim, number> &phi) {
-        const unsigned int batch = phi.get_current_cell_index();
-        phi.evaluate(EvaluationFlags::gradients);
-        submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
-        phi.integrate(EvaluationFlags::gradients);
-      };
-    MatrixFreeTools::compute_diagonal(*this->data, inverse, cell_operation);
+    inverse             = stiffness_diagonal;
     for (const Spring &spring : springs)
       for (unsigned int a = 0; a < spring.rows.size(); ++a)
         inverse.local_element(spring.rows[a]) +=

@@ -75,6 +75,7 @@ namespace FrictionalContact
     this->smoother_degree = smoother_degree;
     level_has_springs.assign(n_level, false);
     active_to_level.clear();
+    largest_eigenvalues.clear();
     build_cycle();
 
     const IndexSet owned    = dof_handler.locally_owned_dofs();
@@ -91,18 +92,34 @@ namespace FrictionalContact
   GeometricMultigrid<dim>::build_cycle()
   {
     // Chebyshev on the upper part of each level's spectrum (1/15 of the
-    // largest eigenvalue up), which CG estimates in 10 iterations.
+    // largest eigenvalue up), which CG estimates in 10 iterations when the
+    // cycle is first made. Springs keep those estimates: with the diagonal
+    // they add, the Jacobi-scaled rows of their nodes are nearer the
+    // identity, and estimating again at every change of the Newton
+    // method's active sets cost a third of its solve.
     const unsigned int n_level = operators.max_level() + 1;
     MGLevelObject<typename Smoother::AdditionalData> smoother_data(0, n_level - 1);
     for (unsigned int level = 0; level < n_level; ++level)
       {
         smoother_data[level].smoothing_range     = 15.;
         smoother_data[level].degree              = smoother_degree;
-        smoother_data[level].eig_cg_n_iterations = 10;
+        smoother_data[level].eig_cg_n_iterations = largest_eigenvalues.empty() ? 10 : 0;
+        if (!largest_eigenvalues.empty())
+          smoother_data[level].max_eigenvalue = largest_eigenvalues[level];
         smoother_data[level].preconditioner =
           operators[level].get_matrix_diagonal_inverse();
       }
     smoother.initialize(operators, smoother_data);
+    if (largest_eigenvalues.empty())
+      for (unsigned int level = 0; level < n_level; ++level)
+        {
+          LevelVector start;
+          operators[level].initialize_dof_vector(start);
+          start = 1.;
+          // The estimate with the safety factor Chebyshev itself applies.
+          largest_eigenvalues.push_back(
+            1.2 * smoother[level].estimate_eigenvalues(start).max_eigenvalue_estimate);
+        }
 
     coarse_control = std::make_unique<ReductionControl>(10000, 1e-20, 1e-3, false, false);
     coarse_cg      = std::make_unique<SolverCG<LevelVector>>(*coarse_control);

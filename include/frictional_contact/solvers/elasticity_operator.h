@@ -75,5 +75,7 @@ namespace FrictionalContact
     /// lambda and 2 mu of each cell batch (lane by lane).
     Table<2, VectorizedArray<number>> moduli;
     std::vector<Spring>               springs;
+    /// The diagonal of K (without springs), computed on first use.
+    VectorType                        stiffness_diagonal;
   };
 } // namespace FrictionalContact

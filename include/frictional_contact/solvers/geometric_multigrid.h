@@ -122,6 +122,9 @@ namespace FrictionalContact
       active_to_level;
     /// The levels that have springs now.
     std::vector<bool>                                                 level_has_springs;
+    /// The largest eigenvalue of each level's Jacobi-scaled operator
+    /// without springs (1.2 times CG's estimate), for the smoothers.
+    std::vector<double>                                               largest_eigenvalues;
 
     MGConstrainedDoFs                                                 constrained_dofs;
     MGLevelObject<LevelOperator>                                      operators;
