@@ -11,18 +11,14 @@ usage: compare_runs.py WHOLE_STATISTICS RESUMED_STATISTICS ROWS
 """
 import argparse
 import sys
+
+from statistics_file import names, table
 parser = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
 parser.add_argument("whole")
 parser.add_argument("resumed")
 parser.add_argument("rows", type=int)
 arguments = parser.parse_args()
-def table(path):
-    return [[float(x) for x in l.split()] for l in open(path) if not l.startswith("#")]
-def names(path):
-    """Column number of each name in the header ("# 6: Contact solver iterations")."""
-    return {l[1:].split(":", 1)[1].strip(): int(l[1:].split(":", 1)[0])
-            for l in open(path) if l.startswith("#") and ":" in l}
 a, b = table(arguments.whole), table(arguments.resumed)
 column = names(arguments.whole)
 same_columns = column == names(arguments.resumed)

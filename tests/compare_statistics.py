@@ -7,6 +7,8 @@ usage: compare_statistics.py A B --columns "Contact force x" ... --tolerance 1e-
 """
 import argparse
 import sys
+
+from statistics_file import names, table
 parser = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
 parser.add_argument("a")
@@ -14,12 +16,6 @@ parser.add_argument("b")
 parser.add_argument("--columns", nargs="+", required=True)
 parser.add_argument("--tolerance", type=float, required=True)
 arguments = parser.parse_args()
-def table(path):
-    return [[float(x) for x in l.split()] for l in open(path) if not l.startswith("#")]
-def names(path):
-    """Column number of each name in the header ("# 17: Contact force x")."""
-    return {l[1:].split(":", 1)[1].strip(): int(l[1:].split(":", 1)[0])
-            for l in open(path) if l.startswith("#") and ":" in l}
 a, b = table(arguments.a), table(arguments.b)
 column_a, column_b = names(arguments.a), names(arguments.b)
 ok = len(a) == len(b) > 0
