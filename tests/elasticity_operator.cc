@@ -85,19 +85,10 @@ namespace
     GeometricMultigrid<dim> multigrid;
     multigrid.initialize(body.get_dof_handler(), model.held_boundaries(),
                          model.lame_parameters(), constraints, K, 2);
-    struct Cycle
-    {
-      const GeometricMultigrid<dim> &multigrid;
-      void
-      vmult(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) const
-      {
-        multigrid.vmult(dst, src);
-      }
-    };
     TrilinosWrappers::MPI::Vector solution = body.make_vector();
     SolverControl control(100, 1e-8 * Kx.l2_norm(), false, false);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    cg.solve(K, solution, Kx, Cycle{multigrid});
+    cg.solve(K, solution, Kx, multigrid);
     solution -= x_t;
     const double error = solution.linfty_norm() / x_t.linfty_norm();
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)

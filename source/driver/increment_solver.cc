@@ -59,22 +59,22 @@ namespace FrictionalContact
   void
   IncrementSolver<dim>::make_geometric_multigrid(const Model<dim> &model)
   {
-    const auto make = [&]() {
-      auto multigrid = std::make_unique<GeometricMultigrid<dim>>();
-      multigrid->initialize(model.get_body().get_dof_handler(),
-                            model.held_boundaries(),
-                            model.lame_parameters(),
-                            model.get_body().get_constraints(),
-                            model.get_body().stiffness_matrix(),
-                            linear_solver.multigrid_smoother_degree());
-      linear_solver.multigrid_setup_seconds += multigrid->setup_seconds;
-      return multigrid;
-    };
-    geometric = make();
+    geometric = std::make_unique<GeometricMultigrid<dim>>();
+    geometric->initialize(model.get_body().get_dof_handler(),
+                          model.held_boundaries(),
+                          model.lame_parameters(),
+                          model.get_body().get_constraints(),
+                          model.get_body().stiffness_matrix(),
+                          linear_solver.multigrid_smoother_degree());
+    linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
     // The Newton systems' springs change the levels' operators: they get
-    // a multigrid of their own.
+    // a cycle of their own, on the same levels.
     if (model.get_contact().active())
-      geometric_with_springs = make();
+      {
+        geometric_with_springs = std::make_unique<GeometricMultigrid<dim>>();
+        geometric_with_springs->initialize_from(*geometric);
+        linear_solver.multigrid_setup_seconds += geometric_with_springs->setup_seconds;
+      }
     linear_solver.set_geometric_multigrid(geometric.get(), geometric_with_springs.get());
     pcout << "Geometric multigrid: " << geometric->n_levels() << " levels, "
           << geometric->coarse_size() << " unknowns on the coarsest" << std::endl;

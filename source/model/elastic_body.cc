@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <frictional_contact/model/elastic_body.h>
@@ -34,6 +35,11 @@ namespace FrictionalContact
   ElasticBody<dim>::setup()
   {
     dof_handler.distribute_dofs(fe);
+    // A mesh made with its levels (for geometric multigrid) gets their dofs.
+    if (const auto *mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(
+          &dof_handler.get_triangulation());
+        mesh != nullptr && mesh->is_multilevel_hierarchy_constructed())
+      dof_handler.distribute_mg_dofs();
     owned_dofs    = dof_handler.locally_owned_dofs();
     relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
 

@@ -364,25 +364,18 @@ namespace FrictionalContact
 
 
   template <int dim>
-  Point<dim>
-  RigidTool<dim>::position(const Point<dim> &X, const double t) const
-  {
-    Tensor<1, dim> shift;
-    for (unsigned int d = 0; d < dim; ++d)
-      shift[d] = translation->value(t, d);
-    return center + shift + rotate<dim>(X - center, axis, angle->value(t));
-  }
-
-
-
-  template <int dim>
   std::vector<MortarSegments::FaceVertices<dim>>
   RigidTool<dim>::faces_at(const double t) const
   {
+    // The motion at t once, then every vertex: y = c + a(t) + R(t)(X - c).
+    Tensor<1, dim> shift;
+    for (unsigned int d = 0; d < dim; ++d)
+      shift[d] = translation->value(t, d);
+    const double            theta = angle->value(t);
     std::vector<Point<dim>> moved;
     moved.reserve(vertices.size());
     for (const Point<dim> &X : vertices)
-      moved.push_back(position(X, t));
+      moved.push_back(center + shift + rotate<dim>(X - center, axis, theta));
     std::vector<MortarSegments::FaceVertices<dim>> result;
     result.reserve(faces.size());
     for (const auto &face : faces)

@@ -31,13 +31,12 @@ namespace FrictionalContact
       if (constraints.is_constrained(i))
         constrained_inverse_diagonal.emplace_back(owned_dofs.index_within_set(i),
                                                   1. / K.diag_element(i));
-    const_cast<DoFHandler<dim> &>(dof_handler).distribute_mg_dofs();
     const unsigned int n_level = dof_handler.get_triangulation().n_global_levels();
 
-    constrained_dofs.clear();
-    constrained_dofs.initialize(dof_handler);
+    constrained_dofs = std::make_shared<MGConstrainedDoFs>();
+    constrained_dofs->initialize(dof_handler);
     for (const auto &[id, components] : held)
-      constrained_dofs.make_zero_boundary_constraints(dof_handler, {id}, components);
+      constrained_dofs->make_zero_boundary_constraints(dof_handler, {id}, components);
 
     // The operator of each level on its own MatrixFree data, with the
     // level's held dofs as constraints.
@@ -48,7 +47,7 @@ namespace FrictionalContact
         AffineConstraints<double> level_constraints;
         level_constraints.reinit(
           DoFTools::extract_locally_relevant_level_dofs(dof_handler, level));
-        level_constraints.add_lines(constrained_dofs.get_boundary_indices(level));
+        level_constraints.add_lines(constrained_dofs->get_boundary_indices(level));
         level_constraints.close();
         typename MatrixFree<dim, float>::AdditionalData data;
         data.tasks_parallel_scheme = MatrixFree<dim, float>::AdditionalData::none;
@@ -56,33 +55,67 @@ namespace FrictionalContact
         data.mg_level              = level;
         auto storage               = std::make_shared<MatrixFree<dim, float>>();
         storage->reinit(mapping, dof_handler, level_constraints, QGauss<1>(2), data);
-        operators[level].initialize(storage, constrained_dofs, level);
+        operators[level].initialize(storage, *constrained_dofs, level);
         operators[level].set_materials(lame);
         operators[level].compute_diagonal();
       }
     coarse_unknowns = operators[0].m();
 
-    transfer.clear();
-    transfer.initialize_constraints(constrained_dofs);
-    transfer.build(dof_handler);
+    transfer = std::make_shared<MGTransferMatrixFree<dim, float>>();
+    transfer->initialize_constraints(*constrained_dofs);
+    transfer->build(dof_handler);
 
+    this->dof_handler     = &dof_handler;
+    this->smoother_degree = smoother_degree;
+    largest_eigenvalues.clear();
+    finish_setup();
+    setup_seconds = timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::initialize_from(const GeometricMultigrid<dim> &other)
+  {
+    const Timer timer;
+    dof_handler                  = other.dof_handler;
+    smoother_degree              = other.smoother_degree;
+    constrained_dofs             = other.constrained_dofs;
+    transfer                     = other.transfer;
+    constrained_inverse_diagonal = other.constrained_inverse_diagonal;
+    coarse_unknowns              = other.coarse_unknowns;
+    // Copies of the level operators: the same MatrixFree data and K's
+    // diagonal; springs give each copy a diagonal of its own. The
+    // smoothers estimate their eigenvalues anew (build_cycle()).
+    largest_eigenvalues.clear();
+    operators.resize(0, other.operators.max_level());
+    for (unsigned int level = 0; level <= operators.max_level(); ++level)
+      operators[level] = other.operators[level];
+    finish_setup();
+    setup_seconds = timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::finish_setup()
+  {
+    const unsigned int n_level = operators.max_level() + 1;
     interfaces.resize(0, n_level - 1);
     for (unsigned int level = 0; level < n_level; ++level)
       interfaces[level].initialize(operators[level]);
     level_matrices     = std::make_unique<mg::Matrix<LevelVector>>(operators);
     interface_matrices = std::make_unique<mg::Matrix<LevelVector>>(interfaces);
-    this->dof_handler     = &dof_handler;
-    this->smoother_degree = smoother_degree;
     level_has_springs.assign(n_level, false);
     active_to_level.clear();
-    largest_eigenvalues.clear();
     build_cycle();
 
-    const IndexSet owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
-    src_copy.reinit(owned, relevant, dof_handler.get_communicator());
-    dst_copy.reinit(owned, relevant, dof_handler.get_communicator());
-    setup_seconds = timer.wall_time();
+    const IndexSet owned    = dof_handler->locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(*dof_handler);
+    src_copy.reinit(owned, relevant, dof_handler->get_communicator());
+    dst_copy.reinit(owned, relevant, dof_handler->get_communicator());
   }
 
 
@@ -129,10 +162,10 @@ namespace FrictionalContact
                                                           DiagonalMatrix<LevelVector>>>(
       *coarse_cg, operators[0], *operators[0].get_matrix_diagonal_inverse());
     multigrid = std::make_unique<Multigrid<LevelVector>>(
-      *level_matrices, *coarse, transfer, smoother, smoother);
+      *level_matrices, *coarse, *transfer, smoother, smoother);
     multigrid->set_edge_matrices(*interface_matrices, *interface_matrices);
     cycle = std::make_unique<PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
-      *dof_handler, *multigrid, transfer);
+      *dof_handler, *multigrid, *transfer);
   }
 
 
@@ -245,9 +278,10 @@ namespace FrictionalContact
     std::memcpy(src_copy.begin(), src.begin(), n * sizeof(double));
     cycle->vmult(dst_copy, src_copy);
     std::memcpy(dst.begin(), dst_copy.begin(), n * sizeof(double));
-    double *values = dst.begin();
+    double       *values = dst.begin();
+    const double *source = src.begin();
     for (const auto &[index, inverse] : constrained_inverse_diagonal)
-      values[index] = inverse * src.begin()[index];
+      values[index] = inverse * source[index];
   }
 
   template class GeometricMultigrid<2>;

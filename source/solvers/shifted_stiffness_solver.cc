@@ -15,22 +15,6 @@ namespace FrictionalContact
 {
   namespace
   {
-    /// The V-cycle given to set_geometric_multigrid() as a preconditioner.
-    struct GeometricCycle
-    {
-      const SpringPreconditioner &cycle;
-
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        cycle.vmult(dst, src);
-      }
-    };
-  } // namespace
-
-  namespace
-  {
     /// The operator x -> (K + sigma I) x.
     class ShiftedOperator
     {
@@ -504,7 +488,7 @@ namespace FrictionalContact
           {
             last_linear_solve = "CG iterations (geometric multigrid)";
             const Timer timer;
-            cg.solve(op, x, b, GeometricCycle{*geometric_cycle});
+            cg.solve(op, x, b, *geometric_cycle);
             krylov_seconds += timer.wall_time();
           }
         else if (use_jacobi(sigma))

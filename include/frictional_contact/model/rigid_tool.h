@@ -53,10 +53,6 @@ namespace FrictionalContact
       return name;
     }
 
-    /// The position at time @p t of the tool point that is at @p X in the file.
-    Point<dim>
-    position(const Point<dim> &X, const double t) const;
-
     /// The tool's faces at time @p t.
     std::vector<MortarSegments::FaceVertices<dim>>
     faces_at(const double t) const;

@@ -46,9 +46,8 @@ namespace FrictionalContact
     using LevelOperator = ElasticityOperator<dim, float>;
 
     /**
-     * Builds the levels of @p dof_handler (whose triangulation must have
-     * been made with its multigrid hierarchy; its level dofs are
-     * distributed here). @p held: the boundary components held at zero in
+     * Builds the levels of @p dof_handler (whose triangulation was made
+     * with its multigrid hierarchy, and whose level dofs are distributed). @p held: the boundary components held at zero in
      * the solves (fixed and prescribed boundaries); @p constraints: those
      * of the active mesh, @p K the assembled stiffness (for its diagonal at
      * the constrained dofs); @p smoother_degree the Chebyshev degree.
@@ -61,6 +60,15 @@ namespace FrictionalContact
                const AffineConstraints<double>                     &constraints,
                const TrilinosWrappers::SparseMatrix                &K,
                const unsigned int                                   smoother_degree);
+
+    /**
+     * A second cycle on the levels of @p other (which must outlive this
+     * one): the same MatrixFree data, constraints and transfer, copies of
+     * its level operators, so that springs set here leave @p other as it
+     * is. Collective.
+     */
+    void
+    initialize_from(const GeometricMultigrid<dim> &other);
 
     bool
     initialized() const override
@@ -103,6 +111,11 @@ namespace FrictionalContact
   private:
     using Smoother = PreconditionChebyshev<LevelOperator, LevelVector>;
 
+    /// The interface matrices, the cycle and the vectors from the level
+    /// operators (by both initialize functions).
+    void
+    finish_setup();
+
     /// (Re)makes the smoothers, the coarse solver and the cycle from the
     /// level operators and their diagonals.
     void
@@ -126,10 +139,11 @@ namespace FrictionalContact
     /// without springs (1.2 times CG's estimate), for the smoothers.
     std::vector<double>                                               largest_eigenvalues;
 
-    MGConstrainedDoFs                                                 constrained_dofs;
+    /// Shared by the cycles made with initialize_from().
+    std::shared_ptr<MGConstrainedDoFs>                                constrained_dofs;
     MGLevelObject<LevelOperator>                                      operators;
     MGLevelObject<MatrixFreeOperators::MGInterfaceOperator<LevelOperator>> interfaces;
-    MGTransferMatrixFree<dim, float>                                  transfer;
+    std::shared_ptr<MGTransferMatrixFree<dim, float>>                 transfer;
     mg::SmootherRelaxation<Smoother, LevelVector>                     smoother;
     std::unique_ptr<SolverControl>                                    coarse_control;
     std::unique_ptr<SolverCG<LevelVector>>                            coarse_cg;
