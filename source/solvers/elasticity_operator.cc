@@ -16,15 +16,65 @@ namespace FrictionalContact
                   const VectorizedArray<number>        &lambda,
                   const VectorizedArray<number>        &two_mu)
     {
+      // On the gradients in reference coordinates, in place: with deal.II's
+      // one-lane VectorizedArray, get_gradient() and submit_gradient()
+      // return and take tensors that GCC copies through the stack, which
+      // stalled every quadrature point (doc/performance.md, "Geometric
+      // multigrid"). J^{-T} is constant on affine cells.
+      using Number                  = VectorizedArray<number>;
+      const unsigned int n_q_points = phi.n_q_points;
+      Number            *gradients  = phi.begin_gradients();
+      const auto         cell_type = phi.get_cell_type();
+      const bool         constant_jacobian =
+        cell_type <= internal::MatrixFreeFunctions::affine;
+      const bool cartesian = cell_type == internal::MatrixFreeFunctions::cartesian;
+      const Number mu = number(0.5) * two_mu;
+      Number       inverse[dim][dim];
       for (const unsigned int q : phi.quadrature_point_indices())
         {
-          const SymmetricTensor<2, dim, VectorizedArray<number>> strain =
-            phi.get_symmetric_gradient(q);
-          SymmetricTensor<2, dim, VectorizedArray<number>> stress = two_mu * strain;
-          const VectorizedArray<number> volumetric = lambda * trace(strain);
+          if (q == 0 || !constant_jacobian)
+            {
+              const Tensor<2, dim, Number> jacobian = phi.inverse_jacobian(q);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  inverse[i][j] = jacobian[i][j];
+            }
+          // The gradient in real coordinates, G[c][i] = d u_c / d x_i.
+          Number G[dim][dim];
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int i = 0; i < dim; ++i)
+              if (cartesian)
+                G[c][i] = inverse[i][i] * gradients[(c * dim + i) * n_q_points + q];
+              else
+              {
+                G[c][i] = inverse[i][0] * gradients[(c * dim) * n_q_points + q];
+                for (unsigned int j = 1; j < dim; ++j)
+                  G[c][i] += inverse[i][j] * gradients[(c * dim + j) * n_q_points + q];
+              }
+          const Number JxW = phi.JxW(q);
+          // The stress times JxW, symmetric.
+          Number volumetric = G[0][0];
+          for (unsigned int d = 1; d < dim; ++d)
+            volumetric += G[d][d];
+          volumetric *= lambda;
           for (unsigned int d = 0; d < dim; ++d)
-            stress[d][d] += volumetric;
-          phi.submit_symmetric_gradient(stress, q);
+            {
+              for (unsigned int e = d + 1; e < dim; ++e)
+                G[d][e] = G[e][d] = JxW * mu * (G[d][e] + G[e][d]);
+              G[d][d] = JxW * (two_mu * G[d][d] + volumetric);
+            }
+          // Back to reference coordinates for the integration.
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int j = 0; j < dim; ++j)
+              if (cartesian)
+                gradients[(c * dim + j) * n_q_points + q] = inverse[j][j] * G[c][j];
+              else
+              {
+                Number sum = inverse[0][j] * G[c][0];
+                for (unsigned int i = 1; i < dim; ++i)
+                  sum += inverse[i][j] * G[c][i];
+                gradients[(c * dim + j) * n_q_points + q] = sum;
+              }
         }
     }
   } // namespace
