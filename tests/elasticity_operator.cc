@@ -33,7 +33,7 @@ namespace
     const Model<dim>                     &model = simulator.get_model();
     const ElasticBody<dim>               &body  = model.get_body();
     const AffineConstraints<double>      &constraints = body.get_constraints();
-    const TrilinosWrappers::SparseMatrix &K = body.stiffness_matrix();
+    const TrilinosWrappers::SparseMatrix &K = body.stiffness().matrix("the test");
 
     typename MatrixFree<dim, double>::AdditionalData data;
     data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
@@ -43,7 +43,7 @@ namespace
                     QGauss<1>(2), data);
     ElasticityOperator<dim, double> op;
     op.initialize(storage);
-    op.set_materials(model.lame_parameters());
+    op.set_materials(model.get_body().lame_parameters());
 
     // x random on the unconstrained dofs, zero on the constrained ones.
     LinearAlgebra::distributed::Vector<double> x, Ax;
@@ -84,7 +84,7 @@ namespace
     // to 1e-8: converges in a few iterations, to x_t.
     GeometricMultigrid<dim> multigrid;
     multigrid.initialize(body.get_dof_handler(), model.held_boundaries(),
-                         model.lame_parameters(), constraints, K, 2);
+                         model.get_body().lame_parameters(), constraints, body.stiffness(), 2);
     TrilinosWrappers::MPI::Vector solution = body.make_vector();
     SolverControl control(100, 1e-8 * Kx.l2_norm(), false, false);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);

@@ -39,7 +39,7 @@ namespace FrictionalContact
     geometric_with_springs.reset();
     if (!contact.has_pairs())
       {
-        linear_solver.initialize(body.stiffness_matrix(),
+        linear_solver.initialize(body.stiffness(),
                                  body.rigid_body_modes(),
                                  0.,
                                  body.volumetric_split());
@@ -62,9 +62,9 @@ namespace FrictionalContact
     geometric = std::make_unique<GeometricMultigrid<dim>>();
     geometric->initialize(model.get_body().get_dof_handler(),
                           model.held_boundaries(),
-                          model.lame_parameters(),
+                          model.get_body().lame_parameters(),
                           model.get_body().get_constraints(),
-                          model.get_body().stiffness_matrix(),
+                          model.get_body().stiffness(),
                           linear_solver.multigrid_smoother_degree());
     linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
     // The Newton systems' springs change the levels' operators: they get

@@ -76,7 +76,7 @@ namespace FrictionalContact
   to_fclib(const IncrementalProblem<dim> &problem,
            const ContactOperator<dim>    &contact)
   {
-    const TrilinosWrappers::SparseMatrix &K    = problem.stiffness;
+    const TrilinosWrappers::SparseMatrix &K    = problem.stiffness.matrix("--fclib-export");
     const MPI_Comm                        comm = K.get_mpi_communicator();
     const auto offsets = column_offsets(dim * contact.n_local(), comm);
     const std::vector<unsigned int> no_offsets(offsets.size(), 0);

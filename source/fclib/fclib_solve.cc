@@ -102,7 +102,7 @@ namespace FrictionalContact
                                                       fclib.mu[0],
                                                       owned,
                                                       comm);
-    linear_solver.initialize(M, {});
+    linear_solver.initialize(M_operator, {});
   }
 
 
@@ -111,7 +111,7 @@ namespace FrictionalContact
   IncrementalProblem<dim>
   FclibSolve<dim>::incremental_problem() const
   {
-    IncrementalProblem<dim> problem{M, f, *contact};
+    IncrementalProblem<dim> problem{M_operator, f, *contact};
     for (unsigned int j = 0; j < contact->n_local(); ++j)
       {
         problem.gaps.push_back(fclib.w[dim * j]);
@@ -251,7 +251,7 @@ namespace FrictionalContact
   FclibSolve<dim>::smallest_eigenvalue_of_M()
   {
     if (fclib.n > largest_dense_size)
-      return compute_smallest_eigenvalue(M,
+      return compute_smallest_eigenvalue(M_operator,
                                          linear_solver,
                                          solver.eigenvalue_tolerance,
                                          solver.lanczos_vectors)

@@ -546,9 +546,12 @@ namespace FrictionalContact
 
   template <int dim>
   std::vector<double>
-  ContactOperator<dim>::normal_stiffness(
-    const TrilinosWrappers::SparseMatrix &K) const
+  ContactOperator<dim>::normal_stiffness(const StiffnessOperator &K) const
   {
+    std::vector<std::vector<types::global_dof_index>> node_dofs;
+    for (const auto &node : nodes)
+      node_dofs.emplace_back(node.dofs.begin(), node.dofs.end());
+    const std::vector<FullMatrix<double>> blocks = K.blocks(node_dofs);
     std::vector<double> c(nodes.size(), 0.);
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
@@ -557,8 +560,7 @@ namespace FrictionalContact
         const Tensor<1, dim> t_n = to_cartesian(j, normal);
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            if (t_n[a] != 0 && t_n[b] != 0)
-              c[j] += t_n[a] * K.el(nodes[j].dofs[a], nodes[j].dofs[b]) * t_n[b];
+            c[j] += t_n[a] * blocks[j](a, b) * t_n[b];
       }
     return c;
   }

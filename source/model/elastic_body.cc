@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/solvers/matrix_free_stiffness.h>
 
 namespace FrictionalContact
 {
@@ -18,13 +19,15 @@ namespace FrictionalContact
     const parallel::distributed::Triangulation<dim> &triangulation,
     const Materials<dim>                            &materials,
     const BoundaryConditions<dim>                   &conditions,
-    const std::map<std::string, types::material_id> &bodies)
+    const std::map<std::string, types::material_id> &bodies,
+    const bool                                       matrix_free)
     : materials(materials)
     , conditions(conditions)
     , bodies(bodies)
     , mpi_communicator(triangulation.get_communicator())
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
+    , matrix_free(matrix_free)
     , volumetric(materials)
   {}
 
@@ -93,6 +96,13 @@ namespace FrictionalContact
         ++n_free_here;
     n_free = Utilities::MPI::sum(n_free_here, mpi_communicator);
 
+    load.reinit(owned_dofs, mpi_communicator);
+    if (matrix_free)
+      {
+        stiffness_operator = std::make_unique<MatrixFreeStiffness<dim>>(
+          dof_handler, constraints, lame_parameters());
+        return;
+      }
     TrilinosWrappers::SparsityPattern sparsity(owned_dofs,
                                                owned_dofs,
                                                relevant_dofs,
@@ -104,9 +114,9 @@ namespace FrictionalContact
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sparsity.compress();
-    stiffness.reinit(sparsity);
-    load.reinit(owned_dofs, mpi_communicator);
-    volumetric.setup(dof_handler, constraints, stiffness);
+    stiffness_matrix.reinit(sparsity);
+    stiffness_operator = std::make_unique<AssembledStiffness>(stiffness_matrix);
+    volumetric.setup(dof_handler, constraints, stiffness_matrix);
   }
 
 
@@ -133,7 +143,8 @@ namespace FrictionalContact
   void
   ElasticBody<dim>::assemble_cell(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    CellScratch                                          &scratch) const
+    CellScratch                                          &scratch,
+    const bool                                            with_matrix) const
   {
     FEValues<dim>                   &fe_values      = scratch.fe_values;
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
@@ -147,6 +158,8 @@ namespace FrictionalContact
     fe_values.reinit(cell);
     cell_matrix = 0;
     cell_load   = 0;
+    if (with_matrix)
+      {
     std::vector<SymmetricTensor<2, dim>> strain(dofs_per_cell);
     // B-bar: the shear part at the Gauss points, the volumetric part from
     // the cell integrals of div phi_i (the mean dilatation).
@@ -181,6 +194,12 @@ namespace FrictionalContact
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
+      }
+    else
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          cell_load(i) += conditions.body_force *
+                          fe_values[displacement].value(i, q) * fe_values.JxW(q);
 
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())
@@ -214,14 +233,15 @@ namespace FrictionalContact
     CellScratch        scratch(fe);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
 
-    stiffness = 0;
-    load      = 0;
+    if (!matrix_free)
+      stiffness_matrix = 0;
+    load = 0;
     volumetric.start_assembly();
     Tensor<1, dim> total_here;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          assemble_cell(cell, scratch);
+          assemble_cell(cell, scratch, !matrix_free);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             total_here[fe.system_to_component_index(i).first] +=
               scratch.cell_load(i);
@@ -233,16 +253,40 @@ namespace FrictionalContact
                                 scratch.volume,
                                 scratch.dof_indices,
                                 constraints);
-          constraints.distribute_local_to_global(scratch.cell_matrix,
-                                                 scratch.cell_load,
-                                                 scratch.dof_indices,
-                                                 stiffness,
-                                                 load);
+          if (matrix_free)
+            constraints.distribute_local_to_global(scratch.cell_load,
+                                                   scratch.dof_indices,
+                                                   load);
+          else
+            constraints.distribute_local_to_global(scratch.cell_matrix,
+                                                   scratch.cell_load,
+                                                   scratch.dof_indices,
+                                                   stiffness_matrix,
+                                                   load);
         }
-    stiffness.compress(VectorOperation::add);
-    volumetric.finish_assembly(stiffness, constraints);
+    if (!matrix_free)
+      {
+        stiffness_matrix.compress(VectorOperation::add);
+        volumetric.finish_assembly(stiffness_matrix, constraints);
+      }
     load.compress(VectorOperation::add);
     reference_total_load = Utilities::MPI::sum(total_here, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  LameParameters
+  ElasticBody<dim>::lame_parameters() const
+  {
+    // From each body's stress-strain tensor: C_0011 = lambda, C_0101 = mu.
+    LameParameters lame;
+    for (const auto &[name, id] : bodies)
+      {
+        const SymmetricTensor<4, dim> &C = materials.of(id).stress_strain_tensor();
+        lame[id] = {{C[0][0][1][1], C[0][1][0][1]}};
+      }
+    return lame;
   }
 
 
@@ -254,7 +298,7 @@ namespace FrictionalContact
     if (conditions.prescribed_boundaries.empty())
       {
         // u is zero on all constrained dofs: the condensed K does it.
-        stiffness.vmult(force, u);
+        stiffness_operator->vmult(force, u);
         return;
       }
     Vector u_ghosted = make_ghosted_vector();

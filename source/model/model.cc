@@ -62,6 +62,23 @@ namespace FrictionalContact
       prm.leave_subsection();
       return levels;
     }
+
+    /// <Linear solver/Matrix-free stiffness>, which needs the geometric
+    /// multigrid (ML and the Cholesky factor need K's entries).
+    bool
+    wants_matrix_free_stiffness(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      const bool matrix_free = prm.get_bool("Matrix-free stiffness");
+      const std::string preconditioner = prm.get("Preconditioner");
+      prm.leave_subsection();
+      if (matrix_free && preconditioner != "geometric multigrid")
+        throw InputError("<Linear solver/Matrix-free stiffness> is true but "
+                         "<Linear solver/Preconditioner> is '" + preconditioner +
+                         "': set the preconditioner to geometric multigrid "
+                         "(the others need the assembled K)");
+      return matrix_free;
+    }
   } // namespace
 
 
@@ -93,11 +110,20 @@ namespace FrictionalContact
     materials = std::make_unique<Materials<dim>>(prm, bodies);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
+    const bool matrix_free = wants_matrix_free_stiffness(prm);
     body = std::make_unique<ElasticBody<dim>>(triangulation,
                                               *materials,
                                               *boundary_conditions,
-                                              bodies);
+                                              bodies,
+                                              matrix_free);
     contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
+    if (matrix_free && materials->any_mean_dilatation())
+      throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
+                       "B-bar bodies (nearly incompressible materials) yet: "
+                       "set it to false");
+    if (matrix_free && contact->has_pairs())
+      throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
+                       "contact pairs (<Contact/Pairs>) yet: set it to false");
   }
 
 
@@ -238,20 +264,6 @@ namespace FrictionalContact
   }
 
 
-
-  template <int dim>
-  LameParameters
-  Model<dim>::lame_parameters() const
-  {
-    // From each body's stress-strain tensor: C_0011 = lambda, C_0101 = mu.
-    LameParameters lame;
-    for (const auto &[name, id] : bodies)
-      {
-        const SymmetricTensor<4, dim> &C = materials->of(id).stress_strain_tensor();
-        lame[id] = {{C[0][0][1][1], C[0][1][0][1]}};
-      }
-    return lame;
-  }
 
   template class Model<2>;
   template class Model<3>;

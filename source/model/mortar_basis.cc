@@ -36,7 +36,7 @@ namespace FrictionalContact
     basis.compress(VectorOperation::insert);
 
     TrilinosWrappers::SparseMatrix product;
-    body.stiffness_matrix().mmult(product, basis);
+    body.stiffness().matrix("contact pairs (<Contact/Pairs>)").mmult(product, basis);
     basis.Tmmult(transformed_stiffness, product);
 
     const VolumetricSplit volumetric = body.volumetric_split();

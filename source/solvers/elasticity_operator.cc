@@ -190,6 +190,30 @@ namespace FrictionalContact
       entry = entry > 0 ? number(1) / entry : number(1);
   }
 
+  template <int dim, typename number>
+  std::vector<FullMatrix<double>>
+  ElasticityOperator<dim, number>::cell_matrices(const unsigned int batch) const
+  {
+    // Column by column: the operator of the cell applied to unit vectors.
+    FEEvaluation<dim, 1, 2, dim, number> phi(*this->data);
+    phi.reinit(batch);
+    const unsigned int n_dofs = phi.dofs_per_cell;
+    const unsigned int filled = this->data->n_active_entries_per_cell_batch(batch);
+    std::vector<FullMatrix<double>> matrices(filled, FullMatrix<double>(n_dofs, n_dofs));
+    for (unsigned int column = 0; column < n_dofs; ++column)
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          phi.begin_dof_values()[i] = VectorizedArray<number>(i == column ? 1 : 0);
+        phi.evaluate(EvaluationFlags::gradients);
+        submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
+        phi.integrate(EvaluationFlags::gradients);
+        for (unsigned int lane = 0; lane < filled; ++lane)
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            matrices[lane](i, column) = phi.begin_dof_values()[i][lane];
+      }
+    return matrices;
+  }
+
   template class ElasticityOperator<2, double>;
   template class ElasticityOperator<3, double>;
   template class ElasticityOperator<2, float>;

@@ -18,7 +18,7 @@ namespace FrictionalContact
     const std::map<types::boundary_id, ComponentMask> &held,
     const LameParameters                              &lame,
     const AffineConstraints<double>                   &constraints,
-    const TrilinosWrappers::SparseMatrix              &K,
+    const StiffnessOperator                           &K,
     const unsigned int                                 smoother_degree)
   {
     const Timer timer;

@@ -152,7 +152,7 @@ namespace FrictionalContact
                      TrilinosWrappers::MPI::Vector      &rhs,
                      TrilinosWrappers::MPI::Vector      &w)
     {
-      const TrilinosWrappers::SparseMatrix &K = problem.stiffness;
+      const StiffnessOperator &K = problem.stiffness;
       const bool any_slip = Utilities::MPI::logical_or(
         impose_node_conditions(problem, sets.conditions, du) && friction,
         du.get_mpi_communicator());
@@ -473,8 +473,10 @@ namespace FrictionalContact
     // inexact Newton steps decide the normal sets, which then cycle.
     const VolumetricSplit *volumetric = linear_solver.volumetric_split();
     const std::vector<double> c = contact.normal_stiffness(
-      volumetric != nullptr ? *volumetric->reduced_stiffness :
-                              problem.stiffness);
+      volumetric != nullptr ?
+        static_cast<const StiffnessOperator &>(
+          AssembledStiffness(*volumetric->reduced_stiffness)) :
+        problem.stiffness);
 
     std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)

@@ -19,7 +19,7 @@ namespace FrictionalContact
     class ShiftedOperator
     {
     public:
-      ShiftedOperator(const TrilinosWrappers::SparseMatrix &K, const double sigma)
+      ShiftedOperator(const StiffnessOperator &K, const double sigma)
         : K(K)
         , sigma(sigma)
       {}
@@ -34,8 +34,8 @@ namespace FrictionalContact
       }
 
     private:
-      const TrilinosWrappers::SparseMatrix &K;
-      const double                          sigma;
+      const StiffnessOperator &K;
+      const double             sigma;
     };
 
     /// Multiplication by a stored inverse diagonal.
@@ -101,6 +101,17 @@ namespace FrictionalContact
                       "the Chebyshev smoother on each level (matrix-vector "
                       "products per smoothing, before and after the coarse "
                       "correction).");
+    prm.declare_entry("Matrix-free stiffness",
+                      "false",
+                      Patterns::Bool(),
+                      "true: K is never assembled; every product with it is "
+                      "matrix-free (as the multigrid's levels), which takes "
+                      "a third of the memory and lets a run reach about "
+                      "three times the unknowns (doc/performance.md, "
+                      "\"Geometric multigrid\"). Needs Preconditioner = "
+                      "geometric multigrid and the semismooth Newton method "
+                      "(or no contact); not for B-bar bodies, contact pairs "
+                      "or --fclib-export.");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),
@@ -201,10 +212,10 @@ namespace FrictionalContact
 
   void
   ShiftedStiffnessSolver::initialize(
-    const TrilinosWrappers::SparseMatrix &K,
-    std::vector<std::vector<double>>      rigid_body_modes,
-    const double                          smallest_eigenvalue_estimate,
-    const VolumetricSplit                &volumetric)
+    const StiffnessOperator          &K,
+    std::vector<std::vector<double>>  rigid_body_modes,
+    const double                      smallest_eigenvalue_estimate,
+    const VolumetricSplit            &volumetric)
   {
     stiffness                = &K;
     preconditioner_stiffness = &K;
@@ -217,7 +228,7 @@ namespace FrictionalContact
     shifted_amg.sigma = -1;
     jacobi_sigma      = -1;
     cholesky.clear();
-    factorizable = ShiftedCholesky::applicable(K);
+    factorizable = K.is_assembled() && ShiftedCholesky::applicable(K.matrix(""));
 
     diagonal.reinit(K.locally_owned_domain_indices(), K.get_mpi_communicator());
     for (const auto i : K.locally_owned_domain_indices())
@@ -230,8 +241,8 @@ namespace FrictionalContact
 
 
   void
-  ShiftedStiffnessSolver::replace_matrix(const TrilinosWrappers::SparseMatrix &K,
-                                         const VolumetricSplit &volumetric)
+  ShiftedStiffnessSolver::replace_matrix(const StiffnessOperator &K,
+                                         const VolumetricSplit   &volumetric)
   {
     stiffness = &K;
     split     = mixed_solves ? volumetric : VolumetricSplit();
@@ -305,14 +316,16 @@ namespace FrictionalContact
     if (!cholesky.analyzed())
       {
         const Timer timer;
-        cholesky.analyze(*preconditioner_stiffness);
+        const TrilinosWrappers::SparseMatrix &K =
+          preconditioner_stiffness->matrix("the Cholesky factor");
+        cholesky.analyze(K);
         factorization_seconds += timer.wall_time();
         // A factor much denser than K (3D beyond some 10^5 unknowns) costs
         // more per solve than the AMG's V-cycle, and memory.
         factor_sparse_enough =
           preconditioner_choice == "cholesky" ||
           cholesky.predicted_factor_nonzeros() <=
-            12. * preconditioner_stiffness->n_nonzero_elements();
+            12. * K.n_nonzero_elements();
       }
     return factor_sparse_enough;
   }
@@ -365,7 +378,7 @@ namespace FrictionalContact
     if (sigma != 0)
       {
         amg.matrix.copy_from(amg_matrix());
-        for (const auto i : stiffness->locally_owned_range_indices())
+        for (const auto i : stiffness->locally_owned_domain_indices())
           amg.matrix.add(i, i, sigma);
         amg.matrix.compress(VectorOperation::add);
       }

@@ -77,9 +77,9 @@ namespace FrictionalContact
 
   template <int dim>
   std::vector<double>
-  SparseContactMap<dim>::normal_stiffness(
-    const TrilinosWrappers::SparseMatrix &K) const
+  SparseContactMap<dim>::normal_stiffness(const StiffnessOperator &stiffness) const
   {
+    const TrilinosWrappers::SparseMatrix &K = stiffness.matrix("an FCLIB problem");
     std::vector<double> c(columns.size(), 0.);
     for (unsigned int j = 0; j < columns.size(); ++j)
       for (const auto &[row_a, value_a] : columns[j][0])

@@ -53,13 +53,13 @@ namespace FrictionalContact
 
 
   SmallestEigenvalue
-  compute_smallest_eigenvalue(const TrilinosWrappers::SparseMatrix &stiffness,
+  compute_smallest_eigenvalue(const StiffnessOperator &stiffness,
                               ShiftedStiffnessSolver               &solver,
                               const double                          tolerance,
                               const unsigned int n_lanczos_vectors)
   {
     SmallestEigenvalue result;
-    const IndexSet    &owned = stiffness.locally_owned_domain_indices();
+    const IndexSet     owned = stiffness.locally_owned_domain_indices();
     const MPI_Comm     comm  = stiffness.get_mpi_communicator();
 
     // The inner solves must be more accurate than the eigenvalue.

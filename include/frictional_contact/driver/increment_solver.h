@@ -107,10 +107,10 @@ namespace FrictionalContact
 
     /// The stiffness the solvers see: K, or with contact pairs K_w = Q^T K Q
     /// of the increment's mortar basis.
-    const TrilinosWrappers::SparseMatrix &
+    const StiffnessOperator &
     stiffness(const Model<dim> &model) const
     {
-      return mortar ? mortar->stiffness() : model.get_body().stiffness_matrix();
+      return mortar ? mortar->stiffness() : model.get_body().stiffness();
     }
 
     /// The solver of the linear systems with K, and its time counters.

@@ -108,6 +108,8 @@ namespace FrictionalContact
     std::string                         file_name;
     IndexSet                            owned;
     TrilinosWrappers::SparseMatrix      M;
+    /// M as the solvers take it.
+    AssembledStiffness                  M_operator{M};
     Vector                              f;
     std::unique_ptr<SparseContactMap<dim>> contact;
     ShiftedStiffnessSolver              linear_solver;

@@ -258,7 +258,7 @@ namespace FrictionalContact
     /// node j in the normal direction (force/length), a scale of K that
     /// follows the units of the problem.
     std::vector<double>
-    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const override;
+    normal_stiffness(const StiffnessOperator &K) const override;
 
     /// T_j B T_j^T on the dim dofs of node j.
     bool

@@ -13,17 +13,22 @@
 #include <frictional_contact/model/boundary_conditions.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/volumetric_blocks.h>
+#include <frictional_contact/solvers/elasticity_operator.h>
+#include <frictional_contact/solvers/stiffness_operator.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace FrictionalContact
 {
   /**
    * The discretised elastic body: Q1 displacement field on a distributed
-   * mesh (the standard or the B-bar element, as the material says), its zero-displacement constraints, the stiffness matrix K and the
-   * load vector p of the reference load (load factor 1). Also evaluates the
-   * support reactions for a given displacement.
+   * mesh (the standard or the B-bar element, as the material says), its
+   * zero-displacement constraints, the stiffness K (assembled, or
+   * matrix-free: MatrixFreeStiffness) and the load vector p of the
+   * reference load (load factor 1). Also evaluates the support reactions
+   * for a given displacement.
    */
   template <int dim>
   class ElasticBody
@@ -31,13 +36,16 @@ namespace FrictionalContact
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    /// @p bodies names the bodies (material ids) for the messages.
+    /// @p bodies names the bodies (material ids) for the messages;
+    /// @p matrix_free: K is never assembled (MatrixFreeStiffness).
     ElasticBody(const parallel::distributed::Triangulation<dim> &triangulation,
                 const Materials<dim>                            &materials,
                 const BoundaryConditions<dim>                   &conditions,
-                const std::map<std::string, types::material_id> &bodies);
+                const std::map<std::string, types::material_id> &bodies,
+                const bool                                       matrix_free);
 
-    /// Distributes the dofs, builds the constraints and the sparsity pattern.
+    /// Distributes the dofs, builds the constraints and the sparsity pattern
+    /// (or, matrix-free, the operator of K).
     void
     setup();
 
@@ -55,7 +63,7 @@ namespace FrictionalContact
     dealii::Vector<double>
     mean_volumetric_strain(const Vector &u_ghosted) const;
 
-    /// Assembles K and p. Call after setup().
+    /// Assembles K (unless matrix-free) and p. Call after setup().
     void
     assemble();
 
@@ -158,11 +166,15 @@ namespace FrictionalContact
       return hanging_node_constraints;
     }
 
-    const TrilinosWrappers::SparseMatrix &
-    stiffness_matrix() const
+    const StiffnessOperator &
+    stiffness() const
     {
-      return stiffness;
+      return *stiffness_operator;
     }
+
+    /// Lame's lambda and mu of each body, from its stress-strain tensor.
+    LameParameters
+    lame_parameters() const;
 
     /// K with its volumetric part held apart, for a nearly incompressible
     /// (B-bar) body; empty (null pointers) otherwise.
@@ -229,10 +241,12 @@ namespace FrictionalContact
       double                               volume = 0;
     };
 
-    /// The cell matrix and load of @p cell, into @p scratch.
+    /// The cell matrix (if @p with_matrix) and load of @p cell, into
+    /// @p scratch.
     void
     assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                  CellScratch &scratch) const;
+                  CellScratch &scratch,
+                  const bool   with_matrix = true) const;
 
     const Materials<dim>                     &materials;
     const BoundaryConditions<dim>            &conditions;
@@ -252,7 +266,10 @@ namespace FrictionalContact
     AffineConstraints<double>      hanging_node_constraints;
     /// Locally owned dofs of prescribed (not fixed) boundaries.
     IndexSet                       prescribed_dofs;
-    TrilinosWrappers::SparseMatrix stiffness;
+    const bool                     matrix_free;
+    /// Empty when matrix-free.
+    TrilinosWrappers::SparseMatrix stiffness_matrix;
+    std::unique_ptr<StiffnessOperator> stiffness_operator;
     Vector                         load;
     Tensor<1, dim>                 reference_total_load;
     /// The volumetric split of K (B-bar bodies only).

@@ -110,10 +110,6 @@ namespace FrictionalContact
     std::map<types::boundary_id, ComponentMask>
     held_boundaries() const;
 
-    /// Lame's parameters of each body (for the matrix-free stiffness).
-    LameParameters
-    lame_parameters() const;
-
     /// The bodies of the scene: name -> material id of their cells.
     const std::map<std::string, types::material_id> &
     get_bodies() const

@@ -3,6 +3,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/solvers/volumetric_split.h>
@@ -34,10 +35,10 @@ namespace FrictionalContact
     MortarBasis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
     /// K_w = Q^T K Q of the body's stiffness matrix.
-    const TrilinosWrappers::SparseMatrix &
+    const StiffnessOperator &
     stiffness() const
     {
-      return transformed_stiffness;
+      return transformed_operator;
     }
 
     /// The body's volumetric split in w (A_w = Q^T A Q, B_w = B Q), empty
@@ -72,6 +73,7 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix basis;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
+    AssembledStiffness             transformed_operator{transformed_stiffness};
     TrilinosWrappers::SparseMatrix transformed_divergence;
     VolumetricSplit                split;
   };

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/friction_cone.h>
 #include <frictional_contact/solvers/nodal_block.h>
 
@@ -62,7 +63,7 @@ namespace FrictionalContact
     /// candidate j in the normal direction, a scale of K that follows the
     /// units of the problem.
     virtual std::vector<double>
-    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const = 0;
+    normal_stiffness(const StiffnessOperator &K) const = 0;
 
     /**
      * T_j B T_j^T on the dofs of candidate j's node, for a block @p B in

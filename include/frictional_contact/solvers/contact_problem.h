@@ -3,6 +3,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/contact_map.h>
 
 #include <string>
@@ -20,7 +21,7 @@ namespace FrictionalContact
   struct IncrementalProblem
   {
     /// The problem with K, p and T; the other members are set afterwards.
-    IncrementalProblem(const TrilinosWrappers::SparseMatrix &stiffness,
+    IncrementalProblem(const StiffnessOperator &stiffness,
                        const TrilinosWrappers::MPI::Vector  &load,
                        const ContactMap<dim>                &contact)
       : stiffness(stiffness)
@@ -28,7 +29,7 @@ namespace FrictionalContact
       , contact(contact)
     {}
 
-    const TrilinosWrappers::SparseMatrix &stiffness;
+    const StiffnessOperator &stiffness;
     /// p = p^{l+1} - K u^l (zero at fixed dofs).
     const TrilinosWrappers::MPI::Vector &load;
     const ContactMap<dim>               &contact;

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/table.h>
 #include <deal.II/base/vectorization.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/operators.h>
@@ -61,6 +62,23 @@ namespace FrictionalContact
 
     void
     compute_diagonal() override;
+
+    /// K's diagonal without springs (after compute_diagonal()); zero at
+    /// constrained dofs.
+    const VectorType &
+    get_stiffness_diagonal() const
+    {
+      return stiffness_diagonal;
+    }
+
+    /**
+     * The matrix of each cell of cell batch @p batch (one per filled lane,
+     * without constraints), its dofs numbered as FEEvaluation's: component
+     * by component, the vertices in lexicographic order (deal.II's vertex
+     * order for Q1).
+     */
+    std::vector<FullMatrix<double>>
+    cell_matrices(const unsigned int batch) const;
 
   private:
     void

@@ -17,6 +17,7 @@
 
 #include <frictional_contact/solvers/elasticity_operator.h>
 #include <frictional_contact/solvers/spring_preconditioner.h>
+#include <frictional_contact/solvers/stiffness_operator.h>
 
 #include <unordered_map>
 
@@ -58,7 +59,7 @@ namespace FrictionalContact
                const std::map<types::boundary_id, ComponentMask>   &held,
                const LameParameters                                &lame,
                const AffineConstraints<double>                     &constraints,
-               const TrilinosWrappers::SparseMatrix                &K,
+               const StiffnessOperator                             &K,
                const unsigned int                                   smoother_degree);
 
     /**

@@ -78,7 +78,7 @@ namespace FrictionalContact
     class ContactStiffness
     {
     public:
-      ContactStiffness(const TrilinosWrappers::SparseMatrix &K,
+      ContactStiffness(const StiffnessOperator &K,
                        const NodeProjection<dim>            &P,
                        const ContactMap<dim>                 &contact,
                        const std::vector<NodeCondition>     &conditions,
@@ -145,7 +145,7 @@ namespace FrictionalContact
       }
 
     private:
-      const TrilinosWrappers::SparseMatrix &K;
+      const StiffnessOperator &K;
       const NodeProjection<dim>            &P;
       const ContactMap<dim>                 &contact;
       const std::vector<NodeCondition>     &conditions;

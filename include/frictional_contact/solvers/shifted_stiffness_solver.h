@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/shifted_cholesky.h>
 #include <frictional_contact/solvers/spring_amg.h>
 #include <frictional_contact/solvers/volumetric_split.h>
@@ -60,10 +61,10 @@ namespace FrictionalContact
      * with AMG go through the mixed system (volumetric_split.h).
      */
     void
-    initialize(const TrilinosWrappers::SparseMatrix &stiffness,
-               std::vector<std::vector<double>>      rigid_body_modes,
-               const double                          smallest_eigenvalue_estimate = 0,
-               const VolumetricSplit                &volumetric = {});
+    initialize(const StiffnessOperator          &stiffness,
+               std::vector<std::vector<double>>  rigid_body_modes,
+               const double                      smallest_eigenvalue_estimate = 0,
+               const VolumetricSplit            &volumetric = {});
 
     /// The volumetric split of K, or nullptr if K has none.
     const VolumetricSplit *
@@ -79,8 +80,8 @@ namespace FrictionalContact
      * as the Q^T K Q of contact pairs from one increment to the next.
      */
     void
-    replace_matrix(const TrilinosWrappers::SparseMatrix &stiffness,
-                   const VolumetricSplit                &volumetric = {});
+    replace_matrix(const StiffnessOperator &stiffness,
+                   const VolumetricSplit   &volumetric = {});
 
     /**
      * The geometric multigrid V-cycles (GeometricMultigrid, which knows the
@@ -230,7 +231,7 @@ namespace FrictionalContact
     {
       return preconditioner_split.reduced_stiffness != nullptr ?
                *preconditioner_split.reduced_stiffness :
-               *preconditioner_stiffness;
+               preconditioner_stiffness->matrix("the AMG (Trilinos ML)");
     }
 
     void
@@ -253,11 +254,11 @@ namespace FrictionalContact
     /// Whether a volumetric split is used (<Nearly incompressible solves>).
     bool         mixed_solves;
 
-    const TrilinosWrappers::SparseMatrix *stiffness = nullptr;
+    const StiffnessOperator              *stiffness = nullptr;
     /// K = A + B^T C^-1 B for a nearly incompressible body (else empty).
     VolumetricSplit                       split;
     /// The K (and split) the preconditioners were built from.
-    const TrilinosWrappers::SparseMatrix *preconditioner_stiffness = nullptr;
+    const StiffnessOperator              *preconditioner_stiffness = nullptr;
     VolumetricSplit                       preconditioner_split;
     std::vector<std::vector<double>>      modes;
     double                                max_diagonal = 0;

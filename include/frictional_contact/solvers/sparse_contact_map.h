@@ -58,7 +58,7 @@ namespace FrictionalContact
                  Vector               &f) const override;
 
     std::vector<double>
-    normal_stiffness(const TrilinosWrappers::SparseMatrix &K) const override;
+    normal_stiffness(const StiffnessOperator &K) const override;
 
     /// By the power iteration on T^T T, to a relative change of 1e-12.
     double

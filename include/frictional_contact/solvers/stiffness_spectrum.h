@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/shifted_stiffness_solver.h>
 
 namespace FrictionalContact
@@ -27,7 +28,7 @@ namespace FrictionalContact
    * Lanczos vectors. @p solver must have been initialized with @p stiffness.
    */
   SmallestEigenvalue
-  compute_smallest_eigenvalue(const TrilinosWrappers::SparseMatrix &stiffness,
+  compute_smallest_eigenvalue(const StiffnessOperator &stiffness,
                               ShiftedStiffnessSolver               &solver,
                               const double                          tolerance,
                               const unsigned int n_lanczos_vectors);

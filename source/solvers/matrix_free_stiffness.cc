@@ -1,0 +1,138 @@
+#include <deal.II/fe/mapping_q1.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/solvers/matrix_free_stiffness.h>
+
+#include <cstring>
+#include <unordered_map>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  MatrixFreeStiffness<dim>::MatrixFreeStiffness(const DoFHandler<dim>           &dof_handler,
+                                                const AffineConstraints<double> &constraints,
+                                                const LameParameters            &lame)
+    : dof_handler(dof_handler)
+    , owned_dofs(dof_handler.locally_owned_dofs())
+  {
+    typename MatrixFree<dim, double>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+    data.mapping_update_flags  = update_gradients | update_JxW_values;
+    storage                    = std::make_shared<MatrixFree<dim, double>>();
+    storage->reinit(MappingQ1<dim>(), dof_handler, constraints, QGauss<1>(2), data);
+    K.initialize(storage);
+    K.set_materials(lame);
+    K.compute_diagonal();
+    diagonal = K.get_stiffness_diagonal();
+
+    double sum = 0;
+    for (const auto i : owned_dofs)
+      if (constraints.is_constrained(i))
+        constrained.push_back(owned_dofs.index_within_set(i));
+      else
+        sum += diagonal.local_element(owned_dofs.index_within_set(i));
+    const MPI_Comm comm      = dof_handler.get_communicator();
+    const double   n_free    = Utilities::MPI::sum(
+      static_cast<double>(owned_dofs.n_elements() - constrained.size()), comm);
+    const double   total     = Utilities::MPI::sum(sum, comm);
+    constrained_diagonal     = n_free > 0 ? total / n_free : 1.;
+
+    storage->initialize_dof_vector(src_copy);
+    storage->initialize_dof_vector(dst_copy);
+  }
+
+
+
+  template <int dim>
+  void
+  MatrixFreeStiffness<dim>::vmult(Vector &dst, const Vector &src) const
+  {
+    // Both vectors hold the locally owned entries in the same order.
+    const std::size_t n = src_copy.locally_owned_size();
+    std::memcpy(src_copy.begin(), src.begin(), n * sizeof(double));
+    K.vmult(dst_copy, src_copy);
+    std::memcpy(dst.begin(), dst_copy.begin(), n * sizeof(double));
+    double       *values = dst.begin();
+    const double *source = src.begin();
+    for (const unsigned int i : constrained)
+      values[i] = constrained_diagonal * source[i];
+  }
+
+
+
+  template <int dim>
+  double
+  MatrixFreeStiffness<dim>::diag_element(const types::global_dof_index i) const
+  {
+    const auto local = owned_dofs.index_within_set(i);
+    return std::binary_search(constrained.begin(), constrained.end(), local) ?
+             constrained_diagonal :
+             diagonal.local_element(local);
+  }
+
+
+
+  template <int dim>
+  std::vector<FullMatrix<double>>
+  MatrixFreeStiffness<dim>::blocks(
+    const std::vector<std::vector<types::global_dof_index>> &groups) const
+  {
+    // Where each wanted dof sits: (group, position in it).
+    std::unordered_map<types::global_dof_index, std::pair<unsigned int, unsigned int>> wanted;
+    std::vector<FullMatrix<double>> result;
+    for (unsigned int g = 0; g < groups.size(); ++g)
+      {
+        for (unsigned int a = 0; a < groups[g].size(); ++a)
+          wanted[groups[g][a]] = {g, a};
+        result.emplace_back(groups[g].size(), groups[g].size());
+      }
+    if (wanted.empty())
+      return result;
+
+    const MatrixFree<dim, double> &data       = *storage;
+    constexpr unsigned int         n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
+      {
+        const unsigned int filled = data.n_active_entries_per_cell_batch(batch);
+        std::vector<std::vector<std::pair<unsigned int, std::pair<unsigned int, unsigned int>>>>
+             found_in_lane(filled);
+        bool any = false;
+        for (unsigned int lane = 0; lane < filled; ++lane)
+          {
+            const auto cell = data.get_cell_iterator(batch, lane);
+            for (unsigned int c = 0; c < dim; ++c)
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                if (const auto it = wanted.find(cell->vertex_dof_index(v, c));
+                    it != wanted.end())
+                  {
+                    found_in_lane[lane].emplace_back(c * n_vertices + v, it->second);
+                    any = true;
+                  }
+          }
+        if (!any)
+          continue;
+        const std::vector<FullMatrix<double>> matrices = K.cell_matrices(batch);
+        for (unsigned int lane = 0; lane < filled; ++lane)
+          for (const auto &[i, where_i] : found_in_lane[lane])
+            for (const auto &[j, where_j] : found_in_lane[lane])
+              if (where_i.first == where_j.first)
+                result[where_i.first](where_i.second, where_j.second) +=
+                  matrices[lane](i, j);
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::SparseMatrix &
+  MatrixFreeStiffness<dim>::matrix(const std::string &purpose) const
+  {
+    throw InputError(purpose + " needs the assembled stiffness matrix, and "
+                     "<Linear solver/Matrix-free stiffness> is true: set it to "
+                     "false");
+  }
+
+  template class MatrixFreeStiffness<2>;
+  template class MatrixFreeStiffness<3>;
+} // namespace FrictionalContact
