@@ -2,7 +2,8 @@
 """The geometric multigrid path against ML's, side by side in one run, on
 Kanno's example II (3D brick, N_X = 2 N_Y = 2 N_Z, mu = 0.3, the
 semismooth Newton method): for each size and path (Linear solver/
-Preconditioner = amg | geometric multigrid) an elastic solve of the same
+Preconditioner = amg | geometric multigrid, and the multigrid with
+Linear solver/Matrix-free stiffness = true) an elastic solve of the same
 mesh and loads without contact, and the contact solve. The unit of the
 contact solve is the elastic solve of its own path (set-up included: ML's
 for amg; the multigrid's set-up is counted apart, it is made once per
@@ -10,7 +11,7 @@ mesh). Peak memory per rank over d gives kB per unknown. Appends one CSV
 row per size, path and rank count and rewrites the table of
 doc/performance.md ("Geometric multigrid") from the CSV.
 
-usage: bench/multigrid.py [--sizes 8,12,16,24,28] [--ranks 1]
+usage: bench/multigrid.py [--sizes 8,12,16,24,28] [--ranks 1] [--paths "amg;..."]
                           [--csv doc/benchmarks/multigrid.csv]
 Run from the top of the repository after scripts/setup.sh.
 """
@@ -33,10 +34,14 @@ COLUMNS = ["n_y", "ranks", "path", "d", "levels", "coarse_unknowns",
            "elastic_solves_per_contact_solve", "peak_memory_mb", "kb_per_unknown",
            "converged"]
 
-PATHS = ("amg", "geometric multigrid")
+MATRIX_FREE = "geometric multigrid, K matrix-free"
+PATHS = ("amg", "geometric multigrid", MATRIX_FREE)
 
 
 def with_path(text, path):
+    if path == MATRIX_FREE:
+        return text + ("subsection Linear solver\n set Preconditioner = geometric multigrid\n"
+                       " set Matrix-free stiffness = true\nend\n")
     return text + f"subsection Linear solver\n set Preconditioner = {path}\nend\n"
 
 
@@ -90,6 +95,10 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sizes", default="8,12,16,24,28")
     parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--paths", default=";".join(PATHS),
+                        help="';'-separated, of: " + "; ".join(PATHS))
+    parser.add_argument("--paths", default=",".join(PATHS),
+                        help="comma-separated, of: " + ", ".join(PATHS).replace(",", ";"))
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "multigrid.csv"))
     parser.add_argument("--contact", default=os.path.join(ROOT, "build", "contact"))
@@ -100,7 +109,8 @@ def main():
         if new:
             writer.writeheader()
         for n_y in (int(s) for s in args.sizes.split(",")):
-            for path in PATHS:
+            for path in args.paths.split(";") if ";" in args.paths else \
+                    [p for p in PATHS if p in args.paths]:
                 row = measure(args.contact, n_y, args.ranks, path)
                 writer.writerow(row)
                 f.flush()

@@ -3,7 +3,11 @@
 // (hanging nodes), a mesh from a Gmsh file, a 3D box, two bodies of
 // different materials. For a random x with zero constrained entries,
 // max |(K x)_i - (K_mf x)_i| / max |(K x)_i| over the unconstrained rows
-// must be round-off (below 1e-12). Then, on the meshes made with levels
+// must be round-off (below 1e-12). The same for MatrixFreeStiffness (the
+// matrix-free K of <Linear solver/Matrix-free stiffness>) on a vector with
+// non-zero constrained entries too, whose rows must be its diagonal times
+// x there; and its nodal blocks against K's at every locally owned node
+// (the entries of unconstrained dofs), on the meshes without hanging nodes. Then, on the meshes made with levels
 // (Preconditioner = geometric multigrid), the V-cycle as the preconditioner
 // of CG with K: it converges in few iterations, to the solution.
 #include <deal.II/base/mpi.h>
@@ -13,14 +17,92 @@
 #include <frictional_contact/driver/simulator.h>
 #include <frictional_contact/solvers/elasticity_operator.h>
 #include <frictional_contact/solvers/geometric_multigrid.h>
+#include <frictional_contact/solvers/matrix_free_stiffness.h>
 
 #include <iostream>
 #include <random>
+#include <set>
 
 using namespace FrictionalContact;
 
 namespace
 {
+  template <int dim>
+  void
+  check_matrix_free_stiffness(const ElasticBody<dim>               &body,
+                              const TrilinosWrappers::SparseMatrix &K)
+  {
+    const AffineConstraints<double> &constraints = body.get_constraints();
+    const MatrixFreeStiffness<dim>   K_mf(body.get_dof_handler(), constraints,
+                                        body.lame_parameters());
+    TrilinosWrappers::MPI::Vector x = body.make_vector(), Kx = body.make_vector(),
+                                  y = body.make_vector();
+    std::mt19937 random(7 + Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    for (const auto i : body.locally_owned_dofs())
+      x[i] = uniform(random);
+    x.compress(VectorOperation::insert);
+    K.vmult(Kx, x);
+    K_mf.vmult(y, x);
+    double difference = 0, largest = 0;
+    bool   constrained_rows = true;
+    for (const auto i : body.locally_owned_dofs())
+      if (constraints.is_constrained(i))
+        constrained_rows = constrained_rows && K_mf.diag_element(i) > 0 &&
+                           y[i] == K_mf.diag_element(i) * x[i];
+      else
+        {
+          difference = std::max(difference, std::abs(Kx[i] - y[i]));
+          largest    = std::max(largest, std::abs(Kx[i]));
+        }
+    const bool products = Utilities::MPI::max(difference, MPI_COMM_WORLD) <=
+                          1e-12 * Utilities::MPI::max(largest, MPI_COMM_WORLD);
+    constrained_rows = !Utilities::MPI::logical_or(!constrained_rows, MPI_COMM_WORLD);
+
+    // The nodal blocks of every locally owned vertex.
+    std::vector<std::vector<types::global_dof_index>> nodes;
+    std::set<types::global_dof_index>                 seen;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (body.locally_owned_dofs().is_element(cell->vertex_dof_index(v, 0)) &&
+              seen.insert(cell->vertex_dof_index(v, 0)).second)
+            {
+              nodes.emplace_back();
+              for (unsigned int c = 0; c < dim; ++c)
+                nodes.back().push_back(cell->vertex_dof_index(v, c));
+            }
+    const auto blocks_mf = K_mf.blocks(nodes);
+    const auto blocks    = AssembledStiffness(K).blocks(nodes);
+    double     block_difference = 0, block_largest = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          if (!constraints.is_constrained(nodes[j][a]) &&
+              !constraints.is_constrained(nodes[j][b]))
+            {
+              block_difference =
+                std::max(block_difference, std::abs(blocks[j](a, b) - blocks_mf[j](a, b)));
+              block_largest = std::max(block_largest, std::abs(blocks[j](a, b)));
+            }
+    const bool hanging = Utilities::MPI::logical_or(
+      body.get_hanging_node_constraints().n_constraints() > 0, MPI_COMM_WORLD);
+    const bool same_blocks =
+      Utilities::MPI::max(block_difference, MPI_COMM_WORLD) <=
+      1e-12 * Utilities::MPI::max(block_largest, MPI_COMM_WORLD);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::cout << "    MatrixFreeStiffness: K x as assembled to 1e-12: " << products
+                  << ", constrained rows its diagonal: " << constrained_rows;
+        if (hanging)
+          std::cout << ", nodal blocks (hanging nodes: not compared)" << std::endl;
+        else
+          std::cout << ", nodal blocks as K's to 1e-12: " << same_blocks << std::endl;
+      }
+  }
+
+
+
   template <int dim>
   void
   check(const std::string &title, const std::string &scene)
@@ -74,6 +156,7 @@ namespace
       std::cout << title << ": d = " << body.n_free_dofs()
                 << ", K x matrix-free as assembled to 1e-12: " << std::boolalpha
                 << (difference <= 1e-12 * largest) << std::endl;
+    check_matrix_free_stiffness(body, K);
     if (!model.mesh().get_mesh_smoothing() ||
         body.get_dof_handler().get_triangulation().n_global_levels() < 2 ||
         !(model.mesh().get_mesh_smoothing() &

@@ -4,7 +4,6 @@
 #include <frictional_contact/solvers/matrix_free_stiffness.h>
 
 #include <cstring>
-#include <unordered_map>
 
 namespace FrictionalContact
 {
@@ -75,49 +74,76 @@ namespace FrictionalContact
   template <int dim>
   std::vector<FullMatrix<double>>
   MatrixFreeStiffness<dim>::blocks(
-    const std::vector<std::vector<types::global_dof_index>> &groups) const
+    const std::vector<std::vector<types::global_dof_index>> &nodes) const
   {
-    // Where each wanted dof sits: (group, position in it).
-    std::unordered_map<types::global_dof_index, std::pair<unsigned int, unsigned int>> wanted;
-    std::vector<FullMatrix<double>> result;
-    for (unsigned int g = 0; g < groups.size(); ++g)
-      {
-        for (unsigned int a = 0; a < groups[g].size(); ++a)
-          wanted[groups[g][a]] = {g, a};
-        result.emplace_back(groups[g].size(), groups[g].size());
-      }
-    if (wanted.empty())
-      return result;
+    // The wanted nodes are flagged (at their first dof) where the ranks
+    // that own cells around them see it; each rank adds its cells' blocks
+    // into column b of the nodal blocks (one vector per b), then the ranks
+    // sum them.
+    LocalVector flag;
+    storage->initialize_dof_vector(flag);
+    for (const auto &dofs : nodes)
+      flag(dofs[0]) = 1;
+    flag.update_ghost_values();
+    std::vector<LocalVector> column(dim);
+    for (LocalVector &c : column)
+      storage->initialize_dof_vector(c);
 
     const MatrixFree<dim, double> &data       = *storage;
     constexpr unsigned int         n_vertices = GeometryInfo<dim>::vertices_per_cell;
     for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
       {
         const unsigned int filled = data.n_active_entries_per_cell_batch(batch);
-        std::vector<std::vector<std::pair<unsigned int, std::pair<unsigned int, unsigned int>>>>
-             found_in_lane(filled);
-        bool any = false;
+        std::vector<std::vector<unsigned int>> wanted_vertices(filled);
+        bool                                   any = false;
         for (unsigned int lane = 0; lane < filled; ++lane)
           {
             const auto cell = data.get_cell_iterator(batch, lane);
-            for (unsigned int c = 0; c < dim; ++c)
-              for (unsigned int v = 0; v < n_vertices; ++v)
-                if (const auto it = wanted.find(cell->vertex_dof_index(v, c));
-                    it != wanted.end())
-                  {
-                    found_in_lane[lane].emplace_back(c * n_vertices + v, it->second);
-                    any = true;
-                  }
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              if (flag(cell->vertex_dof_index(v, 0)) != 0)
+                {
+                  wanted_vertices[lane].push_back(v);
+                  any = true;
+                }
           }
         if (!any)
           continue;
         const std::vector<FullMatrix<double>> matrices = K.cell_matrices(batch);
         for (unsigned int lane = 0; lane < filled; ++lane)
-          for (const auto &[i, where_i] : found_in_lane[lane])
-            for (const auto &[j, where_j] : found_in_lane[lane])
-              if (where_i.first == where_j.first)
-                result[where_i.first](where_i.second, where_j.second) +=
-                  matrices[lane](i, j);
+          {
+            const auto cell = data.get_cell_iterator(batch, lane);
+            for (const unsigned int v : wanted_vertices[lane])
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  column[b](cell->vertex_dof_index(v, a)) +=
+                    matrices[lane](a * n_vertices + v, b * n_vertices + v);
+          }
+      }
+    for (LocalVector &c : column)
+      c.compress(VectorOperation::add);
+
+    std::vector<FullMatrix<double>> result;
+    for (const auto &dofs : nodes)
+      {
+        FullMatrix<double> block(dim, dim);
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            const bool a_held = std::binary_search(constrained.begin(),
+                                                   constrained.end(),
+                                                   owned_dofs.index_within_set(dofs[a]));
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                // A constrained dof's row and column hold only the
+                // diagonal, as in the assembled K.
+                const bool b_held = std::binary_search(constrained.begin(),
+                                                       constrained.end(),
+                                                       owned_dofs.index_within_set(dofs[b]));
+                block(a, b) = a_held || b_held ? 0. : column[b](dofs[a]);
+              }
+            if (a_held)
+              block(a, a) = constrained_diagonal;
+          }
+        result.push_back(std::move(block));
       }
     return result;
   }

@@ -4,11 +4,11 @@ namespace FrictionalContact
 {
   std::vector<FullMatrix<double>>
   AssembledStiffness::blocks(
-    const std::vector<std::vector<types::global_dof_index>> &groups) const
+    const std::vector<std::vector<types::global_dof_index>> &nodes) const
   {
     std::vector<FullMatrix<double>> result;
-    result.reserve(groups.size());
-    for (const auto &dofs : groups)
+    result.reserve(nodes.size());
+    for (const auto &dofs : nodes)
       {
         FullMatrix<double> block(dofs.size(), dofs.size());
         for (unsigned int a = 0; a < dofs.size(); ++a)

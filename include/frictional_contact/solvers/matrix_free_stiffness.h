@@ -35,7 +35,7 @@ namespace FrictionalContact
     diag_element(const types::global_dof_index i) const override;
 
     std::vector<FullMatrix<double>>
-    blocks(const std::vector<std::vector<types::global_dof_index>> &groups) const override;
+    blocks(const std::vector<std::vector<types::global_dof_index>> &nodes) const override;
 
     IndexSet
     locally_owned_domain_indices() const override

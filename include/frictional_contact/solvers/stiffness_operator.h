@@ -37,12 +37,13 @@ namespace FrictionalContact
     diag_element(const types::global_dof_index i) const = 0;
 
     /**
-     * For each group of locally owned dofs (the dofs of one node), K on
-     * them, dense. The matrix-free operator sums its cells' blocks, which
-     * leaves out what hanging nodes add.
+     * For each of @p nodes (the dim dofs of a locally owned node, component
+     * by component), K on them, dim x dim. The matrix-free operator sums
+     * its cells' blocks, which leaves out what hanging nodes add.
+     * Collective.
      */
     virtual std::vector<FullMatrix<double>>
-    blocks(const std::vector<std::vector<types::global_dof_index>> &groups) const = 0;
+    blocks(const std::vector<std::vector<types::global_dof_index>> &nodes) const = 0;
 
     virtual IndexSet
     locally_owned_domain_indices() const = 0;
@@ -82,7 +83,7 @@ namespace FrictionalContact
     }
 
     std::vector<FullMatrix<double>>
-    blocks(const std::vector<std::vector<types::global_dof_index>> &groups) const override;
+    blocks(const std::vector<std::vector<types::global_dof_index>> &nodes) const override;
 
     IndexSet
     locally_owned_domain_indices() const override
