@@ -97,8 +97,6 @@ def main():
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--paths", default=";".join(PATHS),
                         help="';'-separated, of: " + "; ".join(PATHS))
-    parser.add_argument("--paths", default=",".join(PATHS),
-                        help="comma-separated, of: " + ", ".join(PATHS).replace(",", ";"))
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "multigrid.csv"))
     parser.add_argument("--contact", default=os.path.join(ROOT, "build", "contact"))
@@ -109,8 +107,7 @@ def main():
         if new:
             writer.writeheader()
         for n_y in (int(s) for s in args.sizes.split(",")):
-            for path in args.paths.split(";") if ";" in args.paths else \
-                    [p for p in PATHS if p in args.paths]:
+            for path in args.paths.split(";"):
                 row = measure(args.contact, n_y, args.ranks, path)
                 writer.writerow(row)
                 f.flush()
