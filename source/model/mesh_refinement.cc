@@ -76,8 +76,11 @@ namespace FrictionalContact
   MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
   {
     // Measured: about 3 kB per cell in 2D and 14 kB in 3D (matrix, AMG,
-    // vectors, mesh), on top of some 170 MB for the libraries.
-    const double needed    = n_cells * (dim == 2 ? 3e3 : 1.4e4);
+    // vectors, mesh), 4.6 kB in 3D without K (the multigrid path with K
+    // matrix-free, doc/performance.md), on top of some 170 MB for the
+    // libraries.
+    const double per_cell  = dim == 2 ? 3e3 : matrix_free_stiffness ? 5e3 : 1.4e4;
+    const double needed    = n_cells * per_cell;
     // The share of the available memory a run may plan to use.
     const double largest_share = 0.8;
     double       available = 0;

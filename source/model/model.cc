@@ -111,6 +111,7 @@ namespace FrictionalContact
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
     const bool matrix_free = wants_matrix_free_stiffness(prm);
+    refinement->set_matrix_free_stiffness(matrix_free);
     body = std::make_unique<ElasticBody<dim>>(triangulation,
                                               *materials,
                                               *boundary_conditions,

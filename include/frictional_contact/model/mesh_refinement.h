@@ -57,6 +57,14 @@ namespace FrictionalContact
     static void
     restore_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh);
 
+    /// K is not assembled (<Linear solver/Matrix-free stiffness>): a cell
+    /// needs less memory.
+    void
+    set_matrix_free_stiffness(const bool matrix_free)
+    {
+      matrix_free_stiffness = matrix_free;
+    }
+
   private:
     /// The hanging vertices at the mean of their parents, or (@p
     /// on_manifold) at the manifold's point between them.
@@ -75,6 +83,7 @@ namespace FrictionalContact
     refine_near_center(parallel::distributed::Triangulation<dim> &mesh) const;
 
     unsigned int global_refinements;
+    bool         matrix_free_stiffness = false;
     /// Cells within local_radius of local_center are split local_refinements
     /// more times.
     unsigned int local_refinements;
