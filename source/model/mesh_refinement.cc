@@ -76,10 +76,10 @@ namespace FrictionalContact
   MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
   {
     // Measured: about 3 kB per cell in 2D and 14 kB in 3D (matrix, AMG,
-    // vectors, mesh), 4.6 kB in 3D without K (the multigrid path with K
-    // matrix-free, doc/performance.md), on top of some 170 MB for the
-    // libraries.
-    const double per_cell  = dim == 2 ? 3e3 : matrix_free_stiffness ? 5e3 : 1.4e4;
+    // vectors, mesh), 4 kB in 3D without K (the multigrid path with K
+    // matrix-free, at d = 1.6M on 2 ranks), on top of some 180 MB per
+    // rank for the libraries; planned with a tenth more.
+    const double per_cell  = dim == 2 ? 3e3 : matrix_free_stiffness ? 4.4e3 : 1.4e4;
     const double needed    = n_cells * per_cell;
     // The share of the available memory a run may plan to use.
     const double largest_share = 0.8;
