@@ -170,12 +170,7 @@ namespace FrictionalContact
       {
         this->data->initialize_dof_vector(stiffness_diagonal);
         const std::function<void(FEEvaluation<dim, 1, 2, dim, number> &)> cell_operation =
-          [&](FEEvaluation<dim, 1, 2, dim, number> &phi) {
-            const unsigned int batch = phi.get_current_cell_index();
-            phi.evaluate(EvaluationFlags::gradients);
-            submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
-            phi.integrate(EvaluationFlags::gradients);
-          };
+          [this](FEEvaluation<dim, 1, 2, dim, number> &phi) { integrate_stiffness(phi); };
         MatrixFreeTools::compute_diagonal(*this->data, stiffness_diagonal, cell_operation);
       }
     this->inverse_diagonal_entries.reset(new DiagonalMatrix<VectorType>());
@@ -191,6 +186,19 @@ namespace FrictionalContact
   }
 
   template <int dim, typename number>
+  void
+  ElasticityOperator<dim, number>::integrate_stiffness(
+    FEEvaluation<dim, 1, 2, dim, number> &phi) const
+  {
+    const unsigned int batch = phi.get_current_cell_index();
+    phi.evaluate(EvaluationFlags::gradients);
+    submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
+    phi.integrate(EvaluationFlags::gradients);
+  }
+
+
+
+  template <int dim, typename number>
   std::vector<FullMatrix<double>>
   ElasticityOperator<dim, number>::cell_matrices(const unsigned int batch) const
   {
@@ -204,9 +212,7 @@ namespace FrictionalContact
       {
         for (unsigned int i = 0; i < n_dofs; ++i)
           phi.begin_dof_values()[i] = VectorizedArray<number>(i == column ? 1 : 0);
-        phi.evaluate(EvaluationFlags::gradients);
-        submit_stress(phi, moduli(batch, 0), moduli(batch, 1));
-        phi.integrate(EvaluationFlags::gradients);
+        integrate_stiffness(phi);
         for (unsigned int lane = 0; lane < filled; ++lane)
           for (unsigned int i = 0; i < n_dofs; ++i)
             matrices[lane](i, column) = phi.begin_dof_values()[i][lane];

@@ -3,6 +3,9 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/tools.h>
+#include <deal.II/multigrid/mg_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <frictional_contact/solvers/geometric_multigrid.h>
 
@@ -11,6 +14,63 @@
 
 namespace FrictionalContact
 {
+  template <int dim>
+  void
+  CoarseAMG<dim>::initialize(const DoFHandler<dim>                &dof_handler,
+                             const ElasticityOperator<dim, float> &coarse,
+                             const AffineConstraints<double>      &level_constraints)
+  {
+    const MPI_Comm  comm     = dof_handler.get_communicator();
+    const IndexSet &owned    = dof_handler.locally_owned_mg_dofs(0);
+    const IndexSet  relevant = DoFTools::extract_locally_relevant_level_dofs(dof_handler, 0);
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+    MGTools::make_sparsity_pattern(dof_handler, pattern, 0);
+    pattern.compress();
+    matrix.reinit(pattern);
+    AffineConstraints<float> constraints;
+    constraints.copy_from(level_constraints);
+    MatrixFreeTools::compute_matrix<dim, 1, 2, dim, float, VectorizedArray<float>>(
+      *coarse.get_matrix_free(), constraints, matrix,
+      [&coarse](FEEvaluation<dim, 1, 2, dim, float> &phi) { coarse.integrate_stiffness(phi); });
+
+    // The near null space: the translations, from each owned dof's
+    // component.
+    std::vector<std::vector<bool>> translations(dim, std::vector<bool>(owned.n_elements(), false));
+    std::vector<types::global_dof_index> indices(dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.cell_iterators_on_level(0))
+      if (cell->is_locally_owned_on_level())
+        {
+          cell->get_mg_dof_indices(indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            if (owned.is_element(indices[i]))
+              translations[dof_handler.get_fe().system_to_component_index(i).first]
+                          [owned.index_within_set(indices[i])] = true;
+        }
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = false;
+    data.smoother_sweeps       = 2;
+    data.constant_modes        = translations;
+    amg.initialize(matrix, data);
+    src_copy.reinit(owned, comm);
+    dst_copy.reinit(owned, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarseAMG<dim>::vmult(LevelVector &dst, const LevelVector &src) const
+  {
+    for (unsigned int i = 0; i < src_copy.locally_owned_size(); ++i)
+      src_copy.local_element(i) = src.local_element(i);
+    amg.vmult(dst_copy, src_copy);
+    for (unsigned int i = 0; i < dst_copy.locally_owned_size(); ++i)
+      dst.local_element(i) = dst_copy.local_element(i);
+  }
+
+
+
   template <int dim>
   void
   GeometricMultigrid<dim>::initialize(
@@ -22,6 +82,7 @@ namespace FrictionalContact
     const unsigned int                                 smoother_degree)
   {
     const Timer timer;
+    coarse_amg.reset();
     // K's rows of constrained dofs hold only their diagonal: the cycle
     // divides by it there (the right-hand sides of PARPACK's solves are
     // not zero at those dofs).
@@ -58,6 +119,11 @@ namespace FrictionalContact
         operators[level].initialize(storage, *constrained_dofs, level);
         operators[level].set_materials(lame);
         operators[level].compute_diagonal();
+        if (level == 0 && operators[0].m() > largest_jacobi_coarse_size)
+          {
+            coarse_amg = std::make_shared<CoarseAMG<dim>>();
+            coarse_amg->initialize(dof_handler, operators[0], level_constraints);
+          }
       }
     coarse_unknowns = operators[0].m();
 
@@ -83,6 +149,7 @@ namespace FrictionalContact
     smoother_degree              = other.smoother_degree;
     constrained_dofs             = other.constrained_dofs;
     transfer                     = other.transfer;
+    coarse_amg                   = nullptr;
     constrained_inverse_diagonal = other.constrained_inverse_diagonal;
     coarse_unknowns              = other.coarse_unknowns;
     // Copies of the level operators: the same MatrixFree data and K's
@@ -156,11 +223,16 @@ namespace FrictionalContact
 
     coarse_control = std::make_unique<ReductionControl>(10000, 1e-20, 1e-3, false, false);
     coarse_cg      = std::make_unique<SolverCG<LevelVector>>(*coarse_control);
-    coarse = std::make_unique<MGCoarseGridIterativeSolver<LevelVector,
-                                                          SolverCG<LevelVector>,
-                                                          LevelOperator,
-                                                          DiagonalMatrix<LevelVector>>>(
-      *coarse_cg, operators[0], *operators[0].get_matrix_diagonal_inverse());
+    if (coarse_amg)
+      coarse = std::make_unique<
+        MGCoarseGridIterativeSolver<LevelVector, SolverCG<LevelVector>, LevelOperator, CoarseAMG<dim>>>(
+        *coarse_cg, operators[0], *coarse_amg);
+    else
+      coarse = std::make_unique<MGCoarseGridIterativeSolver<LevelVector,
+                                                            SolverCG<LevelVector>,
+                                                            LevelOperator,
+                                                            DiagonalMatrix<LevelVector>>>(
+        *coarse_cg, operators[0], *operators[0].get_matrix_diagonal_inverse());
     multigrid = std::make_unique<Multigrid<LevelVector>>(
       *level_matrices, *coarse, *transfer, smoother, smoother);
     multigrid->set_edge_matrices(*interface_matrices, *interface_matrices);
@@ -284,6 +356,8 @@ namespace FrictionalContact
       values[index] = inverse * source[index];
   }
 
+  template class CoarseAMG<2>;
+  template class CoarseAMG<3>;
   template class GeometricMultigrid<2>;
   template class GeometricMultigrid<3>;
 } // namespace FrictionalContact

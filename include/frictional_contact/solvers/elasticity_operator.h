@@ -4,6 +4,7 @@
 #include <deal.II/base/vectorization.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/operators.h>
 
@@ -70,6 +71,12 @@ namespace FrictionalContact
     {
       return stiffness_diagonal;
     }
+
+    /// On the cell batch @p phi is at, with its dof values set: evaluates
+    /// the gradients and integrates the stress against the test functions
+    /// (the cell's K times the values, into the values).
+    void
+    integrate_stiffness(FEEvaluation<dim, 1, 2, dim, number> &phi) const;
 
     /**
      * The matrix of each cell of cell batch @p batch (one per filled lane,

@@ -6,6 +6,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/multigrid/mg_coarse.h>
@@ -32,12 +33,44 @@ namespace FrictionalContact
    * matrix-free ElasticityOperator in single precision, Chebyshev smoothing
    * with its inverse diagonal, deal.II's matrix-free transfer
    * between levels, and on the coarsest level a conjugate gradient solve
-   * to a relative 1e-3 (Jacobi-preconditioned). Applied to Trilinos
+   * to a relative 1e-3, preconditioned by the inverse diagonal or, above
+   * largest_jacobi_coarse_size unknowns, by Trilinos ML on the level's
+   * assembled matrix (CoarseAMG). Applied to Trilinos
    * vectors, as the preconditioner of CG with the assembled K; at the
    * constrained dofs (hanging, held), whose rows of K hold only their
    * diagonal, it divides by that diagonal. Owns the level operators, the
    * transfer, the smoother and the cycle.
    */
+  /**
+   * Trilinos ML on the assembled matrix of the coarsest level, as the
+   * preconditioner of the coarse CG on single-precision level vectors
+   * (converted to double at its boundary). Owns the matrix, the AMG and
+   * two work vectors.
+   */
+  template <int dim>
+  class CoarseAMG : public Subscriptor
+  {
+  public:
+    using LevelVector = LinearAlgebra::distributed::Vector<float>;
+
+    /// Assembles @p coarse (the level-0 operator) and builds the AMG with
+    /// the dim translations as near null space. Collective.
+    void
+    initialize(const DoFHandler<dim>                &dof_handler,
+               const ElasticityOperator<dim, float> &coarse,
+               const AffineConstraints<double>      &level_constraints);
+
+    void
+    vmult(LevelVector &dst, const LevelVector &src) const;
+
+  private:
+    TrilinosWrappers::SparseMatrix                     matrix;
+    TrilinosWrappers::PreconditionAMG                  amg;
+    mutable LinearAlgebra::distributed::Vector<double> src_copy, dst_copy;
+  };
+
+
+
   template <int dim>
   class GeometricMultigrid : public SpringPreconditioner
   {
@@ -109,6 +142,10 @@ namespace FrictionalContact
     /// Seconds initialize() took.
     double setup_seconds = 0;
 
+    /// Coarsest levels up to this many unknowns take the inverse diagonal
+    /// as the coarse CG's preconditioner, larger ones CoarseAMG.
+    static constexpr types::global_dof_index largest_jacobi_coarse_size = 1000;
+
   private:
     using Smoother = PreconditionChebyshev<LevelOperator, LevelVector>;
 
@@ -148,11 +185,10 @@ namespace FrictionalContact
     mg::SmootherRelaxation<Smoother, LevelVector>                     smoother;
     std::unique_ptr<SolverControl>                                    coarse_control;
     std::unique_ptr<SolverCG<LevelVector>>                            coarse_cg;
-    std::unique_ptr<MGCoarseGridIterativeSolver<LevelVector,
-                                                SolverCG<LevelVector>,
-                                                LevelOperator,
-                                                DiagonalMatrix<LevelVector>>>
-                                                                      coarse;
+    /// Shared by the cycles made with initialize_from(); null for a small
+    /// coarsest level.
+    std::shared_ptr<CoarseAMG<dim>>                                   coarse_amg;
+    std::unique_ptr<MGCoarseGridBase<LevelVector>>                    coarse;
     std::unique_ptr<mg::Matrix<LevelVector>>                          level_matrices, interface_matrices;
     std::unique_ptr<Multigrid<LevelVector>>                           multigrid;
     std::unique_ptr<PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
