@@ -105,13 +105,15 @@ namespace FrictionalContact
                       "false",
                       Patterns::Bool(),
                       "true: K is never assembled; every product with it is "
-                      "matrix-free (as the multigrid's levels), which takes "
-                      "a third of the memory and lets a run reach about "
-                      "three times the unknowns (doc/performance.md, "
-                      "\"Geometric multigrid\"). Needs Preconditioner = "
-                      "geometric multigrid and the semismooth Newton method "
-                      "(or no contact); not for B-bar bodies, contact pairs "
-                      "or --fclib-export.");
+                      "matrix-free (as on the multigrid's levels): at d >= "
+                      "1M about a third of the memory per unknown of the "
+                      "ML path, so about three times the unknowns fit "
+                      "(doc/performance.md, \"Geometric multigrid\"). Needs "
+                      "Preconditioner = geometric multigrid; the semismooth "
+                      "Newton method, or Kanno's method where its primal "
+                      "steps take Jacobi (ML and the Cholesky factor need "
+                      "K's entries); not for B-bar bodies, contact pairs or "
+                      "--fclib-export.");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),
