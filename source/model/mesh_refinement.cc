@@ -79,8 +79,10 @@ namespace FrictionalContact
     // vectors, mesh), 4 kB in 3D without K (the multigrid path with K
     // matrix-free, at d = 1.6M on 2 ranks), on top of some 180 MB per
     // rank for the libraries; planned with a tenth more.
-    const double per_cell  = dim == 2 ? 3e3 : matrix_free_stiffness ? 4.4e3 : 1.4e4;
-    const double needed    = n_cells * per_cell;
+    const double matrix_free_per_cell = 4.4e3;
+    const double per_cell =
+      dim == 2 ? 3e3 : matrix_free_stiffness ? matrix_free_per_cell : 1.4e4;
+    const double needed = n_cells * per_cell;
     // The share of the available memory a run may plan to use.
     const double largest_share = 0.8;
     double       available = 0;
@@ -97,15 +99,26 @@ namespace FrictionalContact
       }
     available = Utilities::MPI::broadcast(comm, available, 0);
     if (available > 0 && needed > largest_share * available)
-      throw InputError("<Geometry>: the mesh would have " +
-                       Input::to_text(n_cells) + " cells and need about " +
-                       Input::to_text(needed / 1e9) +
-                       " GB, more than " +
-                       Input::to_text(100 * largest_share) + " % of the " +
-                       Input::to_text(available / 1e9) +
-                       " GB available; use fewer cells (repetitions, "
-                       "<Mesh refinement/Global refinements>, <Local "
-                       "refinements>)");
+      {
+        // In 3D the path without K may still fit.
+        const bool fits_matrix_free =
+          dim == 3 && !matrix_free_stiffness &&
+          n_cells * matrix_free_per_cell <= largest_share * available;
+        throw InputError(
+          "<Geometry>: the mesh would have " + Input::to_text(n_cells) +
+          " cells and need about " + Input::to_text(needed / 1e9) +
+          " GB, more than " + Input::to_text(100 * largest_share) + " % of the " +
+          Input::to_text(available / 1e9) +
+          " GB available; use fewer cells (repetitions, <Mesh "
+          "refinement/Global refinements>, <Local refinements>)" +
+          (fits_matrix_free ?
+             std::string(", or set <Linear solver/Preconditioner> = geometric "
+                         "multigrid and <Linear solver/Matrix-free stiffness> = "
+                         "true (about " +
+                         Input::to_text(n_cells * matrix_free_per_cell / 1e9) +
+                         " GB)") :
+             std::string()));
+      }
   }
 
 
