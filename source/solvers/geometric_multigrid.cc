@@ -26,16 +26,16 @@ namespace FrictionalContact
     TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
     MGTools::make_sparsity_pattern(dof_handler, pattern, 0);
     pattern.compress();
-    matrix.reinit(pattern);
+    stiffness.reinit(pattern);
     AffineConstraints<float> constraints;
     constraints.copy_from(level_constraints);
     MatrixFreeTools::compute_matrix<dim, 1, 2, dim, float, VectorizedArray<float>>(
-      *coarse.get_matrix_free(), constraints, matrix,
+      *coarse.get_matrix_free(), constraints, stiffness,
       [&coarse](FEEvaluation<dim, 1, 2, dim, float> &phi) { coarse.integrate_stiffness(phi); });
 
     // The near null space: the translations, from each owned dof's
     // component.
-    std::vector<std::vector<bool>> translations(dim, std::vector<bool>(owned.n_elements(), false));
+    translations.assign(dim, std::vector<bool>(owned.n_elements(), false));
     std::vector<types::global_dof_index> indices(dof_handler.get_fe().n_dofs_per_cell());
     for (const auto &cell : dof_handler.cell_iterators_on_level(0))
       if (cell->is_locally_owned_on_level())
@@ -46,14 +46,55 @@ namespace FrictionalContact
               translations[dof_handler.get_fe().system_to_component_index(i).first]
                           [owned.index_within_set(indices[i])] = true;
         }
+    build(stiffness);
+    src_copy.reinit(owned, comm);
+    dst_copy.reinit(owned, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarseAMG<dim>::initialize_from(const CoarseAMG<dim> &other)
+  {
+    stiffness.copy_from(other.stiffness);
+    translations = other.translations;
+    build(stiffness);
+    src_copy.reinit(other.src_copy);
+    dst_copy.reinit(other.dst_copy);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarseAMG<dim>::set_springs(
+    const std::vector<typename ElasticityOperator<dim, float>::Spring> &springs,
+    const Utilities::MPI::Partitioner                                  &partitioner)
+  {
+    with_springs.copy_from(stiffness);
+    for (const auto &spring : springs)
+      for (unsigned int a = 0; a < spring.rows.size(); ++a)
+        for (unsigned int b = 0; b < spring.rows.size(); ++b)
+          with_springs.add(partitioner.local_to_global(spring.rows[a]),
+                           partitioner.local_to_global(spring.rows[b]),
+                           spring.values[a * spring.rows.size() + b]);
+    with_springs.compress(VectorOperation::add);
+    build(with_springs);
+  }
+
+
+
+  template <int dim>
+  void
+  CoarseAMG<dim>::build(const TrilinosWrappers::SparseMatrix &of)
+  {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
     data.smoother_sweeps       = 2;
     data.constant_modes        = translations;
-    amg.initialize(matrix, data);
-    src_copy.reinit(owned, comm);
-    dst_copy.reinit(owned, comm);
+    amg.initialize(of, data);
   }
 
 
@@ -149,7 +190,12 @@ namespace FrictionalContact
     smoother_degree              = other.smoother_degree;
     constrained_dofs             = other.constrained_dofs;
     transfer                     = other.transfer;
-    coarse_amg                   = nullptr;
+    coarse_amg.reset();
+    if (other.coarse_amg)
+      {
+        coarse_amg = std::make_shared<CoarseAMG<dim>>();
+        coarse_amg->initialize_from(*other.coarse_amg);
+      }
     constrained_inverse_diagonal = other.constrained_inverse_diagonal;
     coarse_unknowns              = other.coarse_unknowns;
     // Copies of the level operators: the same MatrixFree data and K's
@@ -332,6 +378,9 @@ namespace FrictionalContact
                                      dof_handler->get_communicator());
         if (!has_springs && !level_has_springs[level])
           continue;
+        if (level == 0 && coarse_amg)
+          coarse_amg->set_springs(per_level[0],
+                                  *operators[0].get_matrix_free()->get_vector_partitioner());
         operators[level].set_springs(std::move(per_level[level]));
         operators[level].compute_diagonal();
         level_has_springs[level] = has_springs;

@@ -42,10 +42,11 @@ namespace FrictionalContact
    * transfer, the smoother and the cycle.
    */
   /**
-   * Trilinos ML on the assembled matrix of the coarsest level, as the
-   * preconditioner of the coarse CG on single-precision level vectors
-   * (converted to double at its boundary). Owns the matrix, the AMG and
-   * two work vectors.
+   * Trilinos ML on the assembled matrix of the coarsest level (with the
+   * springs that level has), as the preconditioner of the coarse CG on
+   * single-precision level vectors (converted to double at its boundary).
+   * Owns the level's K, its matrix with springs, the AMG, the near null
+   * space and two work vectors.
    */
   template <int dim>
   class CoarseAMG : public Subscriptor
@@ -60,11 +61,26 @@ namespace FrictionalContact
                const ElasticityOperator<dim, float> &coarse,
                const AffineConstraints<double>      &level_constraints);
 
+    /// The same level's K as @p other, without springs. Collective.
+    void
+    initialize_from(const CoarseAMG<dim> &other);
+
+    /// The AMG of K + @p springs (local indices of the level's vectors,
+    /// numbered by @p partitioner) from now on. Collective.
+    void
+    set_springs(const std::vector<typename ElasticityOperator<dim, float>::Spring> &springs,
+                const Utilities::MPI::Partitioner                                  &partitioner);
+
     void
     vmult(LevelVector &dst, const LevelVector &src) const;
 
   private:
-    TrilinosWrappers::SparseMatrix                     matrix;
+    /// Builds the AMG of @p of.
+    void
+    build(const TrilinosWrappers::SparseMatrix &of);
+
+    TrilinosWrappers::SparseMatrix                     stiffness, with_springs;
+    std::vector<std::vector<bool>>                     translations;
     TrilinosWrappers::PreconditionAMG                  amg;
     mutable LinearAlgebra::distributed::Vector<double> src_copy, dst_copy;
   };
@@ -185,8 +201,8 @@ namespace FrictionalContact
     mg::SmootherRelaxation<Smoother, LevelVector>                     smoother;
     std::unique_ptr<SolverControl>                                    coarse_control;
     std::unique_ptr<SolverCG<LevelVector>>                            coarse_cg;
-    /// Shared by the cycles made with initialize_from(); null for a small
-    /// coarsest level.
+    /// Each cycle's own (the springs differ); null for a small coarsest
+    /// level.
     std::shared_ptr<CoarseAMG<dim>>                                   coarse_amg;
     std::unique_ptr<MGCoarseGridBase<LevelVector>>                    coarse;
     std::unique_ptr<mg::Matrix<LevelVector>>                          level_matrices, interface_matrices;
