@@ -149,6 +149,13 @@ namespace FrictionalContact
       return rel_tolerance;
     }
 
+    /// Whether spring_preconditioner() is the geometric multigrid.
+    bool
+    newton_uses_geometric_multigrid() const
+    {
+      return use_geometric_multigrid(0.) && geometric_with_springs != nullptr;
+    }
+
     /**
      * The preconditioner of K plus springs: the geometric multigrid's
      * with springs if one was given, else the AMG (SpringAMG) taken from
