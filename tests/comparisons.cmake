@@ -394,23 +394,23 @@ contact_compare_statistics(flat_punch_2d.rotated
   "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d" ${_punch}
   ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rotated_2d/output-flat_punch_rotated_2d/statistics 1e-8)
 
-# The geometric multigrid path against ML's: the same contact forces to the
-# solver tolerance (1e-8 relative to the largest force of each column).
-contact_compare_statistics(hertz_3d_multigrid.same_forces
-  "hertz_3d_multigrid.mpirun=2;hertz_3d.mpirun=2"
-  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d_multigrid.mpirun=2/output-hertz_3d_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d.mpirun=2/output-hertz_3d/statistics 1e-8)
-contact_compare_statistics(cattaneo_2d_multigrid.same_forces
-  "cattaneo_2d_multigrid;cattaneo_2d"
-  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d_multigrid/output-cattaneo_2d_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d/output-cattaneo_2d/statistics 1e-8)
-# K never assembled (Linear solver/Matrix-free stiffness): the same forces
-# (on 3 ranks in 2D: the nodal blocks are summed across the ranks).
-contact_compare_statistics(hertz_3d_matrix_free.same_forces
-  "hertz_3d_matrix_free.mpirun=2;hertz_3d.mpirun=2"
-  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d_matrix_free.mpirun=2/output-hertz_3d_matrix_free/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/hertz_3d.mpirun=2/output-hertz_3d/statistics 1e-8)
-contact_compare_statistics(cattaneo_2d_matrix_free.same_forces
-  "cattaneo_2d_matrix_free.mpirun=3;cattaneo_2d"
-  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d_matrix_free.mpirun=3/output-cattaneo_2d_matrix_free/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/cattaneo_2d/output-cattaneo_2d/statistics 1e-8)
+# The geometric multigrid path (<scene>_multigrid) and the one with K never
+# assembled (<scene>_matrix_free, Linear solver/Matrix-free stiffness)
+# against ML's: the same contact forces to the solver tolerance (1e-8
+# relative to the largest force of each column). Each entry: scene, its
+# run's suffix, the variant's suffix per path (cattaneo_2d_matrix_free on
+# 3 ranks: the nodal blocks are summed across the ranks).
+foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
+              "cattaneo_2d;;;.mpirun=3")
+  list(GET _case 0 _scene)
+  list(GET _case 1 _reference)
+  list(GET _case 2 _multigrid)
+  list(GET _case 3 _matrix_free)
+  foreach(_path multigrid matrix_free)
+    set(_variant ${_scene}_${_path}${_${_path}})
+    contact_compare_statistics(${_scene}_${_path}.same_forces
+      "${_variant};${_scene}${_reference}"
+      ${CMAKE_CURRENT_BINARY_DIR}/${_variant}/output-${_scene}_${_path}/statistics
+      ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_reference}/output-${_scene}/statistics 1e-8)
+  endforeach()
+endforeach()
