@@ -141,25 +141,16 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  ElasticBody<dim>::assemble_cell(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    CellScratch                                          &scratch,
-    const bool                                            with_matrix) const
+  ElasticBody<dim>::cell_stiffness(const LinearElasticMaterial<dim> &material,
+                                   CellScratch                      &scratch) const
   {
-    FEValues<dim>                   &fe_values      = scratch.fe_values;
-    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
-    FullMatrix<double>              &cell_matrix    = scratch.cell_matrix;
-    dealii::Vector<double>          &cell_load      = scratch.cell_load;
+    const FEValues<dim>             &fe_values     = scratch.fe_values;
+    FullMatrix<double>              &cell_matrix   = scratch.cell_matrix;
     const FEValuesExtractors::Vector displacement(0);
-    const LinearElasticMaterial<dim> &material     = materials.of(cell->material_id());
     const SymmetricTensor<4, dim>   &C             = material.stress_strain_tensor();
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
 
-    fe_values.reinit(cell);
     cell_matrix = 0;
-    cell_load   = 0;
-    if (with_matrix)
-      {
     std::vector<SymmetricTensor<2, dim>> strain(dofs_per_cell);
     // B-bar: the shear part at the Gauss points, the volumetric part from
     // the cell integrals of div phi_i (the mean dilatation).
@@ -182,8 +173,6 @@ namespace FrictionalContact
             divergence_integral[i] += trace(strain[i]) * JxW;
             for (unsigned int j = 0; j <= i; ++j)
               cell_matrix(i, j) += (stress_i * strain[j]) * JxW;
-            cell_load(i) +=
-              conditions.body_force * fe_values[displacement].value(i, q) * JxW;
           }
       }
     if (material.mean_dilatation)
@@ -194,12 +183,31 @@ namespace FrictionalContact
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
-      }
-    else
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          cell_load(i) += conditions.body_force *
-                          fe_values[displacement].value(i, q) * fe_values.JxW(q);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    CellScratch                                          &scratch,
+    const bool                                            with_matrix) const
+  {
+    FEValues<dim>                   &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
+    dealii::Vector<double>          &cell_load      = scratch.cell_load;
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+
+    fe_values.reinit(cell);
+    cell_load = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        cell_load(i) +=
+          conditions.body_force * fe_values[displacement].value(i, q) * fe_values.JxW(q);
+    if (with_matrix)
+      cell_stiffness(materials.of(cell->material_id()), scratch);
 
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())

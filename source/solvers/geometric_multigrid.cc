@@ -10,7 +10,6 @@
 #include <frictional_contact/solvers/geometric_multigrid.h>
 
 #include <cmath>
-#include <cstring>
 
 namespace FrictionalContact
 {
@@ -394,11 +393,9 @@ namespace FrictionalContact
   void
   GeometricMultigrid<dim>::vmult(Vector &dst, const Vector &src) const
   {
-    // Both vectors hold the locally owned entries in the same order.
-    const std::size_t n = src_copy.locally_owned_size();
-    std::memcpy(src_copy.begin(), src.begin(), n * sizeof(double));
+    copy_owned_entries(src, src_copy);
     cycle->vmult(dst_copy, src_copy);
-    std::memcpy(dst.begin(), dst_copy.begin(), n * sizeof(double));
+    copy_owned_entries(dst_copy, dst);
     double       *values = dst.begin();
     const double *source = src.begin();
     for (const auto &[index, inverse] : constrained_inverse_diagonal)

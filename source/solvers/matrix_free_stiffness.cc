@@ -3,7 +3,6 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/solvers/matrix_free_stiffness.h>
 
-#include <cstring>
 
 namespace FrictionalContact
 {
@@ -22,9 +21,9 @@ namespace FrictionalContact
     K.initialize(storage);
     K.set_materials(lame);
     K.compute_diagonal();
-    diagonal = K.get_stiffness_diagonal();
 
-    double sum = 0;
+    const LocalVector &diagonal = K.get_stiffness_diagonal();
+    double             sum      = 0;
     for (const auto i : owned_dofs)
       if (constraints.is_constrained(i))
         constrained.push_back(owned_dofs.index_within_set(i));
@@ -46,11 +45,9 @@ namespace FrictionalContact
   void
   MatrixFreeStiffness<dim>::vmult(Vector &dst, const Vector &src) const
   {
-    // Both vectors hold the locally owned entries in the same order.
-    const std::size_t n = src_copy.locally_owned_size();
-    std::memcpy(src_copy.begin(), src.begin(), n * sizeof(double));
+    copy_owned_entries(src, src_copy);
     K.vmult(dst_copy, src_copy);
-    std::memcpy(dst.begin(), dst_copy.begin(), n * sizeof(double));
+    copy_owned_entries(dst_copy, dst);
     double       *values = dst.begin();
     const double *source = src.begin();
     for (const unsigned int i : constrained)
@@ -66,7 +63,7 @@ namespace FrictionalContact
     const auto local = owned_dofs.index_within_set(i);
     return std::binary_search(constrained.begin(), constrained.end(), local) ?
              constrained_diagonal :
-             diagonal.local_element(local);
+             K.get_stiffness_diagonal().local_element(local);
   }
 
 

@@ -437,7 +437,7 @@ namespace FrictionalContact
   SpringPreconditioner &
   ShiftedStiffnessSolver::spring_preconditioner()
   {
-    if (use_geometric_multigrid(0.) && geometric_with_springs != nullptr)
+    if (newton_uses_geometric_multigrid())
       return *geometric_with_springs;
     // Its fine level smooths as ML's Chebyshev does; with another
     // smoother the Newton method keeps the AMG of K.

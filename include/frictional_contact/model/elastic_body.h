@@ -248,6 +248,11 @@ namespace FrictionalContact
                   CellScratch &scratch,
                   const bool   with_matrix = true) const;
 
+    /// The cell matrix of the cell @p scratch's FEValues are at (with its
+    /// @p material), and its divergence integrals and volume.
+    void
+    cell_stiffness(const LinearElasticMaterial<dim> &material, CellScratch &scratch) const;
+
     const Materials<dim>                     &materials;
     const BoundaryConditions<dim>            &conditions;
     std::map<std::string, types::material_id> bodies;

@@ -9,12 +9,28 @@
 #include <deal.II/matrix_free/operators.h>
 
 #include <array>
+#include <cstring>
+#include <type_traits>
 #include <map>
 #include <vector>
 
 namespace FrictionalContact
 {
   using namespace dealii;
+
+  /**
+   * Copies the locally owned entries of @p src into @p dst: a Trilinos
+   * vector and deal.II's distributed vector of the matrix-free objects
+   * number the locally owned dofs alike, so it is one memcpy.
+   */
+  template <typename Source, typename Destination>
+  void
+  copy_owned_entries(const Source &src, Destination &dst)
+  {
+    static_assert(std::is_same_v<typename Source::value_type, double> &&
+                  std::is_same_v<typename Destination::value_type, double>);
+    std::memcpy(dst.begin(), src.begin(), src.locally_owned_size() * sizeof(double));
+  }
 
   /// Lame's lambda and the shear modulus of each body (material id): the
   /// isotropic stress sigma = lambda tr(eps) I + 2 mu eps (in 2D lambda is

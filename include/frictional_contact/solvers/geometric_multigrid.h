@@ -28,20 +28,6 @@
 namespace FrictionalContact
 {
   /**
-   * A geometric multigrid V-cycle for the stiffness K on the levels of the
-   * p4est mesh (local smoothing, as in step-37): on each level the
-   * matrix-free ElasticityOperator in single precision, Chebyshev smoothing
-   * with its inverse diagonal, deal.II's matrix-free transfer
-   * between levels, and on the coarsest level a conjugate gradient solve
-   * to a relative 1e-3, preconditioned by the inverse diagonal or, above
-   * largest_jacobi_coarse_size unknowns, by Trilinos ML on the level's
-   * assembled matrix (CoarseAMG). Applied to Trilinos
-   * vectors, as the preconditioner of CG with the assembled K; at the
-   * constrained dofs (hanging, held), whose rows of K hold only their
-   * diagonal, it divides by that diagonal. Owns the level operators, the
-   * transfer, the smoother and the cycle.
-   */
-  /**
    * Trilinos ML on the assembled matrix of the coarsest level (with the
    * springs that level has), as the preconditioner of the coarse CG on
    * single-precision level vectors (converted to double at its boundary).
@@ -87,6 +73,20 @@ namespace FrictionalContact
 
 
 
+  /**
+   * A geometric multigrid V-cycle for the stiffness K on the levels of the
+   * p4est mesh (local smoothing, as in step-37): on each level the
+   * matrix-free ElasticityOperator in single precision, Chebyshev smoothing
+   * with its inverse diagonal, deal.II's matrix-free transfer
+   * between levels, and on the coarsest level a conjugate gradient solve
+   * to a relative 1e-3, preconditioned by the inverse diagonal or, above
+   * largest_jacobi_coarse_size unknowns, by Trilinos ML on the level's
+   * assembled matrix (CoarseAMG). Applied to Trilinos vectors, as the
+   * preconditioner of CG with K (assembled or matrix-free); at the
+   * constrained dofs (hanging, held), whose rows of K hold only their
+   * diagonal, it divides by that diagonal. Owns the level operators, the
+   * transfer, the smoother and the cycle.
+   */
   template <int dim>
   class GeometricMultigrid : public SpringPreconditioner
   {
@@ -97,10 +97,10 @@ namespace FrictionalContact
 
     /**
      * Builds the levels of @p dof_handler (whose triangulation was made
-     * with its multigrid hierarchy, and whose level dofs are distributed). @p held: the boundary components held at zero in
-     * the solves (fixed and prescribed boundaries); @p constraints: those
-     * of the active mesh, @p K the assembled stiffness (for its diagonal at
-     * the constrained dofs); @p smoother_degree the Chebyshev degree.
+     * with its multigrid hierarchy, and whose level dofs are distributed).
+     * @p held: the boundary components held at zero in the solves (fixed
+     * and prescribed boundaries); @p constraints: those of the active mesh,
+     * @p K the stiffness (for its diagonal at the constrained dofs); @p smoother_degree the Chebyshev degree.
      * Collective.
      */
     void

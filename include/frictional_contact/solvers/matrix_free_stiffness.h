@@ -16,8 +16,7 @@ namespace FrictionalContact
    * applied to Trilinos vectors through copies of their locally owned
    * entries. The row of a constrained dof is the identity times the mean of
    * K's diagonal, as the assembled K's hold a diagonal entry of that size
-   * only. Owns the MatrixFree data, the operator, K's diagonal and two work
-   * vectors.
+   * only. Owns the MatrixFree data, the operator and two work vectors.
    */
   template <int dim>
   class MatrixFreeStiffness : public StiffnessOperator
@@ -65,7 +64,6 @@ namespace FrictionalContact
     IndexSet                                     owned_dofs;
     std::shared_ptr<MatrixFree<dim, double>>     storage;
     ElasticityOperator<dim, double>              K;
-    LocalVector                                  diagonal;
     /// Local indices of the locally owned constrained dofs.
     std::vector<unsigned int>                    constrained;
     double                                       constrained_diagonal = 1;
