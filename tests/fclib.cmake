@@ -2,9 +2,11 @@
 # import and solve again, same solution) on 1 and 2 ranks, solves of FCLIB
 # files from outside the project, and the errors of the --fclib mode.
 
-# Also a two-body increment (fclib/round_trip_two_bodies).
+# Also a two-body increment (fclib/round_trip_two_bodies) and one re-solved
+# on adapted meshes (fclib/round_trip_adapted).
 foreach(_case "0:example2_export:round_trip" "2:example2_export:round_trip"
-              "2:two_bodies_export:round_trip_two_bodies")
+              "2:two_bodies_export:round_trip_two_bodies"
+              "0:adapted_export:round_trip_adapted")
   string(REPLACE ":" ";" _case "${_case}")
   list(GET _case 0 _ranks)
   list(GET _case 1 _scene)

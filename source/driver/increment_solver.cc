@@ -177,9 +177,11 @@ namespace FrictionalContact
     start += lifting;
 
     IncrementOutcome<dim> outcome;
-    outcome.load = body.make_vector();
-    body.internal_force(start, outcome.load);
-    outcome.load.sadd(-1., load_factor, body.load_vector());
+    outcome.load = std::make_unique<TrilinosWrappers::MPI::Vector>(
+      body.make_vector());
+    TrilinosWrappers::MPI::Vector &load = *outcome.load;
+    body.internal_force(start, load);
+    load.sadd(-1., load_factor, body.load_vector());
     if (contact.has_pairs())
       {
         // The contact pairs were updated to this configuration: the basis
@@ -201,8 +203,8 @@ namespace FrictionalContact
             preconditioner_basis = mortar;
           }
         mu_pi = 0;
-        TrilinosWrappers::MPI::Vector load = outcome.load;
-        mortar->force_to_w(load, outcome.load);
+        const TrilinosWrappers::MPI::Vector load_in_u = load;
+        mortar->force_to_w(load_in_u, load);
       }
 
     outcome.du_solved       = body.make_vector();
@@ -215,9 +217,9 @@ namespace FrictionalContact
         result.linear_iterations =
           linear_solver.solve(0.,
                               outcome.du_solved,
-                              outcome.load,
+                              load,
                               linear_solver.relative_tolerance() *
-                                outcome.load.l2_norm());
+                                load.l2_norm());
         result.amg_setups = linear_solver.n_amg_setups - setups_before;
         result.seconds    = wall.wall_time();
         if (!std::isfinite(outcome.du_solved.l2_norm()))
@@ -230,7 +232,7 @@ namespace FrictionalContact
       {
         outcome.problem =
           make_problem(model,
-                       outcome.load,
+                       load,
                        start,
                        contact.obstacle_displacement(t_end) -
                          contact.obstacle_displacement(t_start));

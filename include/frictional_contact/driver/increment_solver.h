@@ -30,8 +30,10 @@ namespace FrictionalContact
   template <int dim>
   struct IncrementOutcome
   {
-    /// p = p^{l+1} - K (u^l + the prescribed increment).
-    TrilinosWrappers::MPI::Vector load;
+    /// p = p^{l+1} - K (u^l + the prescribed increment); on the heap, so
+    /// that the problem's reference to it survives a move of the outcome
+    /// (the re-solves on adapted meshes assign outcomes).
+    std::unique_ptr<TrilinosWrappers::MPI::Vector> load;
     /// The contact problem (none without contact).
     std::unique_ptr<IncrementalProblem<dim>> problem;
     /// The solution of the problem: du without the prescribed increment,
