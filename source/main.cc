@@ -132,7 +132,6 @@ namespace
   {
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
-    FclibSolve<dim>::set_defaults(prm);
     if (options.parameters)
       options.parameters->parse(prm);
     FclibSolve<dim> fclib(prm,

@@ -1,5 +1,6 @@
 # FCLIB: the round trip (export, FCLIB's error of the stored solution,
-# import and solve again, same solution) on 1 and 2 ranks, solves of FCLIB
+# import and solve again with the sparse LU, ML and Kanno's method, same
+# solution) on 1 and 2 ranks, solves of FCLIB
 # files from outside the project, and the errors of the --fclib mode.
 
 # Also a two-body increment (fclib/round_trip_two_bodies) and one re-solved
@@ -21,6 +22,7 @@ foreach(_case "0:example2_export:round_trip" "2:example2_export:round_trip"
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/fclib_round_trip.py
             $<TARGET_FILE:contact> ${_scene}.prm --ranks ${_ranks}
             --primal-dual ${CMAKE_CURRENT_SOURCE_DIR}/fclib/primal_dual.prm
+            --amg ${CMAKE_CURRENT_SOURCE_DIR}/fclib/amg.prm
     WORKING_DIRECTORY ${_directory})
   set(_processors 1)
   if(_ranks GREATER 0)
@@ -49,8 +51,10 @@ fclib_expect_error(missing_file 1 "cannot open the FCLIB file 'missing.hdf5'"
 set(_primal_dual ${CMAKE_CURRENT_SOURCE_DIR}/fclib/primal_dual.prm)
 fclib_expect_error(not_an_fclib_file 1 "has no global problem"
   --fclib ${_primal_dual})
-fclib_expect_error(amg 1 "Linear solver/Preconditioner.*jacobi"
+fclib_expect_error(amg_shared_nodes 1 "<Linear solver/Preconditioner> = 'amg' is not valid: contacts share nodes.*use jacobi"
   --fclib ${_small} ${CMAKE_CURRENT_SOURCE_DIR}/fclib/amg.prm)
+fclib_expect_error(amg_not_symmetric 1 "<Linear solver/Preconditioner> = 'amg' is not valid: M is not symmetric .*conjugate gradients; use jacobi"
+  --fclib ${_data}/CubeH8.hdf5 ${CMAKE_CURRENT_SOURCE_DIR}/fclib/amg.prm)
 fclib_expect_error(no_convergence 2 "no convergence in 10 iterations.*Residuals.*no solution written"
   --fclib ${_small} --solution not_written.hdf5
   ${CMAKE_CURRENT_SOURCE_DIR}/fclib/few_iterations.prm)

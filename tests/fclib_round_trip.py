@@ -2,11 +2,12 @@
 """The FCLIB round trip: a scene exports an increment as an FCLIB global
 problem with its solution; the stored solution must pass FCLIB's error
 measure, and the program, solving the file again from scratch with the
-semismooth Newton method (the default) and with the accelerated primal-dual
-method (the parameter file of --primal-dual), must find the same solution.
+semismooth Newton method (the default), with it on the AMG path (the
+parameter file of --amg) and with the accelerated primal-dual method (that
+of --primal-dual), must find the same solution.
 
 usage: fclib_round_trip.py <contact> <scene.prm> --primal-dual <file.prm>
-                           [--ranks N] [--limit 1e-8]
+                           --amg <file.prm> [--ranks N] [--limit 1e-8]
 Runs in the current folder; the scene writes output-fclib/fclib-00001.hdf5.
 """
 import argparse
@@ -19,6 +20,7 @@ def main():
     parser.add_argument("contact")
     parser.add_argument("scene")
     parser.add_argument("--primal-dual", required=True)
+    parser.add_argument("--amg", required=True)
     parser.add_argument("--ranks", type=int, default=0)
     parser.add_argument("--limit", type=float, default=1e-8)
     arguments = parser.parse_args()
@@ -30,8 +32,9 @@ def main():
     checks = [("FCLIB error of the exported solution",
                numbers(r"FCLIB error: (\S+)", stored)[0], limit)]
     for method, settings in [("Newton", []),
+                             ("Newton with ML", [arguments.amg]),
                              ("primal-dual", [arguments.primal_dual])]:
-        solution = f"imported-{method}.hdf5"
+        solution = f"imported-{method.replace(' ', '-')}.hdf5"
         imported = run([contact, "--fclib", exported, "--solution", solution]
                        + settings, ranks)
         compared = run([contact, "--fclib", exported, "--evaluate", solution,

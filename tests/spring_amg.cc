@@ -124,7 +124,7 @@ namespace
     const ContactOperator<3>             &contact = simulator.get_model().get_contact();
     const TrilinosWrappers::SparseMatrix &K       = body.stiffness().matrix("the test");
 
-    ShiftedStiffnessSolver linear_solver(prm);
+    ShiftedStiffnessSolver linear_solver(prm, 3);
     linear_solver.initialize(body.stiffness(), body.rigid_body_modes());
     linear_solver.prepare_stiffness_preconditioner();
     auto &spring_amg = dynamic_cast<SpringAMG &>(linear_solver.spring_preconditioner());
@@ -143,7 +143,7 @@ namespace
         for (unsigned int b = 0; b < 3; ++b)
           K_with_springs.add(block.dofs[a], block.dofs[b], block.values[3 * a + b]);
     K_with_springs.compress(VectorOperation::add);
-    ShiftedStiffnessSolver rebuilt(prm);
+    ShiftedStiffnessSolver rebuilt(prm, 3);
     const AssembledStiffness with_springs(K_with_springs);
     rebuilt.initialize(with_springs, body.rigid_body_modes());
     rebuilt.prepare_stiffness_preconditioner();

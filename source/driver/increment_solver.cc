@@ -20,7 +20,7 @@ namespace FrictionalContact
   IncrementSolver<dim>::IncrementSolver(ParameterHandler         &prm,
                                         const ConditionalOStream &pcout)
     : pcout(pcout)
-    , linear_solver(prm)
+    , linear_solver(prm, dim)
     , solver(prm, pcout)
   {}
 

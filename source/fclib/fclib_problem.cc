@@ -198,24 +198,42 @@ namespace FrictionalContact
   double
   asymmetry(const std::vector<MatrixEntry> &A)
   {
-    std::map<std::pair<unsigned int, unsigned int>, double> sum;
+    // The entries sorted by (row, column), repeated ones summed.
+    using Index = std::pair<unsigned int, unsigned int>;
+    std::vector<std::pair<Index, double>> sum;
+    sum.reserve(A.size());
     for (const auto &e : A)
-      sum[{e.row, e.column}] += e.value;
-    const auto diagonal = [&](const unsigned int i) {
-      const auto entry = sum.find({i, i});
-      return entry == sum.end() ? 0. : std::abs(entry->second);
+      sum.push_back({{e.row, e.column}, e.value});
+    std::sort(sum.begin(), sum.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
+    std::size_t n_distinct = 0;
+    for (std::size_t k = 0; k < sum.size(); ++k)
+      if (n_distinct > 0 && sum[n_distinct - 1].first == sum[k].first)
+        sum[n_distinct - 1].second += sum[k].second;
+      else
+        sum[n_distinct++] = sum[k];
+    sum.resize(n_distinct);
+    const auto value_at = [&](const Index index) {
+      const auto entry = std::lower_bound(
+        sum.begin(), sum.end(), index, [](const auto &a, const Index &b) {
+          return a.first < b;
+        });
+      return entry != sum.end() && entry->first == index ? entry->second : 0.;
     };
+
     double largest = 0;
     for (const auto &[index, value] : sum)
       {
-        const auto   mirror = sum.find({index.second, index.first});
-        const double other  = mirror == sum.end() ? 0. : mirror->second;
+        const double other = value_at({index.second, index.first});
+        if (value == other)
+          continue;
         const double scale =
-          std::sqrt(diagonal(index.first) * diagonal(index.second));
-        if (value != other)
-          largest = std::max(largest,
-                             scale > 0 ? std::abs(value - other) / scale :
-                                         std::numeric_limits<double>::infinity());
+          std::sqrt(std::abs(value_at({index.first, index.first}) *
+                             value_at({index.second, index.second})));
+        largest = std::max(largest,
+                           scale > 0 ? std::abs(value - other) / scale :
+                                       std::numeric_limits<double>::infinity());
       }
     return largest;
   }

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
@@ -18,20 +19,103 @@ namespace FrictionalContact
   {
     /// Problems up to this size get the eigenvalues of M from LAPACK.
     constexpr unsigned int largest_dense_size = 1000;
+
+    /// Preconditioner = auto: problems up to this size take the sparse LU
+    /// path (Jacobi for Kanno's method). Measured (doc/fclib.md): on the
+    /// files of our 3D scenes, the LU path is faster at n = 972 and 675,
+    /// ML's 10 times faster at n = 4,131.
+    constexpr unsigned int largest_size_without_amg = 2000;
+
+    /// Whether each contact's rows of H are the dim rows of one node (rows
+    /// dim k to dim k + dim - 1) that no other contact has: the contacts of
+    /// an elastic body on a mesh, as our semismooth Newton method takes
+    /// them (not several contacts on one rigid body).
+    bool
+    contacts_on_own_nodes(const FclibProblem &fclib)
+    {
+      const unsigned int d = fclib.spacedim;
+      std::vector<int>   contact_of_node(fclib.n / d + 1, -1);
+      std::vector<int>   node_of_contact(fclib.n_contacts(), -1);
+      for (const auto &e : fclib.H)
+        {
+          const int node = e.row / d, contact = e.column / d;
+          if ((contact_of_node[node] >= 0 && contact_of_node[node] != contact) ||
+              (node_of_contact[contact] >= 0 && node_of_contact[contact] != node))
+            return false;
+          contact_of_node[node]    = contact;
+          node_of_contact[contact] = node;
+        }
+      return true;
+    }
   } // namespace
 
 
 
   template <int dim>
-  void
-  FclibSolve<dim>::set_defaults(ParameterHandler &prm)
+  bool
+  FclibSolve<dim>::choose_preconditioner(ParameterHandler &prm) const
   {
-    // No mesh, hence no rigid-body modes for an AMG: Jacobi by default
-    // (measured faster than the factorization on the FCLIB files of our 3D
-    // scenes, doc/fclib.md), or a sparse Cholesky factorization of M.
-    prm.enter_subsection("Linear solver");
-    prm.set("Preconditioner", "jacobi");
+    prm.enter_subsection("Contact solver");
+    const bool newton = prm.get("Method") == "semismooth Newton";
     prm.leave_subsection();
+    prm.enter_subsection("Linear solver");
+    const std::string choice = prm.get("Preconditioner");
+    prm.leave_subsection();
+    if (choice == "geometric multigrid" ||
+        (choice == "cholesky" &&
+         Utilities::MPI::n_mpi_processes(mpi_communicator) > 1))
+      Input::fail("Linear solver/Preconditioner",
+                  choice,
+                  "auto, amg, jacobi, or cholesky on one process: an FCLIB "
+                  "problem has no mesh for the multigrid");
+
+    // What the AMG path needs: nodes of dim unknowns (the translations are
+    // its near null space), M symmetric for CG, and for the Newton method
+    // contacts on nodes of their own.
+    std::string why_not;
+    if (fclib.n % dim != 0)
+      why_not = "the AMG takes the unknowns as nodes of " +
+                std::to_string(dim) + " components, and the file has " +
+                std::to_string(fclib.n) + " unknowns";
+    else if (const double asymmetric = (choice == "amg" || choice == "auto" ||
+                                        !newton) ?
+                                         asymmetry(fclib.M) :
+                                         0;
+             asymmetric > 1e-10)
+      {
+        if (!newton)
+          throw InputError(
+            "the FCLIB file '" + file_name +
+            "' has a matrix M that is not symmetric (max |m_ij - m_ji| / "
+            "sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) +
+            "); Kanno's method needs M symmetric positive definite: use "
+            "<Contact solver/Method> = semismooth Newton");
+        why_not = "M is not symmetric (max |m_ij - m_ji| / sqrt(|m_ii m_jj|) "
+                  "= " + Input::to_text(asymmetric) +
+                  ") and the AMG path solves with conjugate gradients";
+      }
+    else if (newton && !contacts_on_own_nodes(fclib))
+      why_not = "contacts share nodes (several contacts on one body, say), "
+                "and the semismooth Newton method's AMG path takes each "
+                "contact on a node of its own";
+
+    if (choice == "amg" && !why_not.empty())
+      Input::fail("Linear solver/Preconditioner",
+                  choice,
+                  why_not + "; use jacobi (with which the semismooth Newton "
+                  "method factorizes M)");
+    if (choice != "auto")
+      return choice == "amg";
+    // auto: the AMG path for problems of finite-element size that it
+    // takes, Jacobi (and the sparse LU for the Newton method) otherwise.
+    const bool amg = why_not.empty() && fclib.n > largest_size_without_amg;
+    if (!amg)
+      {
+        prm.enter_subsection("Linear solver");
+        prm.set("Preconditioner", "jacobi");
+        prm.leave_subsection();
+      }
+    return amg;
   }
 
 
@@ -46,32 +130,11 @@ namespace FrictionalContact
     , fclib(std::move(problem))
     , file_name(file_name)
     , owned(fclib.n)
-    , linear_solver(prm)
+    , with_amg(choose_preconditioner(prm))
+    , linear_solver(prm, dim)
     , solver(prm, pcout)
   {
     AssertThrow(fclib.spacedim == dim, ExcInternalError());
-    prm.enter_subsection("Linear solver");
-    const std::string preconditioner = prm.get("Preconditioner");
-    if (preconditioner != "jacobi" &&
-        !(preconditioner == "cholesky" &&
-          Utilities::MPI::n_mpi_processes(comm) == 1))
-      Input::fail("Linear solver/Preconditioner",
-                  preconditioner,
-                  "jacobi, or cholesky on one process: an FCLIB problem "
-                  "has no mesh, hence no rigid-body modes for the AMG");
-    prm.leave_subsection();
-    if (solver.method->needs_smallest_eigenvalue())
-      {
-        const double asymmetric = asymmetry(fclib.M);
-        if (asymmetric > 1e-10)
-          throw InputError(
-            "the FCLIB file '" + file_name +
-            "' has a matrix M that is not symmetric (max |m_ij - m_ji| / "
-            "sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) +
-            "); Kanno's method needs M symmetric positive definite: use "
-            "<Contact solver/Method> = semismooth Newton");
-      }
-
     // Rank 0 holds everything.
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     if (root)
@@ -102,7 +165,22 @@ namespace FrictionalContact
                                                       fclib.mu[0],
                                                       owned,
                                                       comm);
-    linear_solver.initialize(M_operator, {});
+    linear_solver.initialize(M_operator, translations());
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  FclibSolve<dim>::translations() const
+  {
+    // Unknown i is component i % dim of its node, as in the files this
+    // program exports (deal.II numbers the dofs of a vertex together).
+    std::vector<std::vector<double>> modes(dim,
+                                           std::vector<double>(owned.n_elements()));
+    for (unsigned int i = 0; i < owned.n_elements(); ++i)
+      modes[i % dim][i] = 1;
+    return modes;
   }
 
 
@@ -136,11 +214,12 @@ namespace FrictionalContact
           << Input::to_text(fclib.mu[0]) << std::endl;
 
     // The semismooth Newton method has its own form for FCLIB's arrays
-    // (FclibNewton, with a sparse LU); any other method runs as a plugin on
-    // our form of the problem.
-    const Outcome outcome = solver.method_name == "semismooth Newton" ?
-                              solve_by_newton() :
-                              solve_by_plugin();
+    // (FclibNewton, with a sparse LU) unless the AMG is asked for; any
+    // other method runs as a plugin on our form of the problem.
+    const Outcome outcome =
+      solver.method_name == "semismooth Newton" && !with_amg ?
+        solve_by_newton() :
+        solve_by_plugin();
     pcout << (outcome.converged ? "Converged" : "Not converged") << " after "
           << outcome.iterations << ' ' << solver.method->iteration_name()
           << " iterations";
@@ -196,6 +275,9 @@ namespace FrictionalContact
   typename FclibSolve<dim>::Outcome
   FclibSolve<dim>::solve_by_plugin()
   {
+    // Counted from here: the spectral constants, the free velocity and the
+    // preconditioners' set-ups are part of the solve.
+    const Timer             wall;
     IncrementalProblem<dim> problem = incremental_problem();
     problem.largest_singular_value_T = contact->largest_singular_value();
     if (solver.method->needs_smallest_eigenvalue())
@@ -229,6 +311,10 @@ namespace FrictionalContact
       problem.length_scale = 1;
 
     pcout << "Solver: " << solver.method->describe() << std::endl;
+    if (with_amg)
+      pcout << "Linear solver: CG with ML on M (the translations as near "
+               "null space)"
+            << std::endl;
     Vector                      du(f);
     std::vector<Tensor<1, dim>> r(contact->n_local());
     du = 0;
@@ -238,7 +324,7 @@ namespace FrictionalContact
     outcome.converged         = result.converged;
     outcome.iterations        = result.iterations;
     outcome.linear_iterations = result.linear_iterations;
-    outcome.seconds           = result.seconds;
+    outcome.seconds           = wall.wall_time();
     outcome.failure           = result.failure;
     outcome.solution          = to_fclib(du, r);
     return outcome;

@@ -190,7 +190,9 @@ namespace FrictionalContact
 
 
 
-  ShiftedStiffnessSolver::ShiftedStiffnessSolver(ParameterHandler &prm)
+  ShiftedStiffnessSolver::ShiftedStiffnessSolver(ParameterHandler  &prm,
+                                                 const unsigned int dim)
+    : dim(dim)
   {
     prm.enter_subsection("Linear solver");
     rel_tolerance         = prm.get_double("Relative tolerance");
@@ -400,14 +402,13 @@ namespace FrictionalContact
     data.set_parameters(parameters, unused_constant_modes, matrix);
 
     // Near null space: the rigid-body modes, nodal blocks of dim dofs.
-    const int          dim     = modes.size() == 3 ? 2 : 3;
     const unsigned int n_modes = n_null_space_modes();
     Epetra_MultiVector null_space(matrix.trilinos_matrix().OperatorDomainMap(),
                                   n_modes);
     for (unsigned int m = 0; m < n_modes; ++m)
       for (unsigned int row = 0; row < modes[m].size(); ++row)
         null_space[m][row] = modes[m][row];
-    parameters.set("PDE equations", dim);
+    parameters.set("PDE equations", static_cast<int>(dim));
     parameters.set("aggregation: damping factor", prolongator_damping);
     parameters.set("null space: type", "pre-computed");
     parameters.set("null space: dimension", static_cast<int>(n_modes));
@@ -428,8 +429,8 @@ namespace FrictionalContact
   unsigned int
   ShiftedStiffnessSolver::n_null_space_modes() const
   {
-    const unsigned int dim = modes.size() == 3 ? 2 : 3;
-    return translations_only ? dim : modes.size();
+    return translations_only ? std::min<unsigned int>(dim, modes.size()) :
+                               modes.size();
   }
 
 

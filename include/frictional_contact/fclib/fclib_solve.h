@@ -28,10 +28,6 @@ namespace FrictionalContact
   class FclibSolve
   {
   public:
-    /// Entries that differ from a scene's defaults in this mode:
-    /// Jacobi-preconditioned CG (for the accelerated primal-dual method).
-    static void
-    set_defaults(ParameterHandler &prm);
 
     FclibSolve(ParameterHandler  &prm,
                FclibProblem       problem,
@@ -80,6 +76,21 @@ namespace FrictionalContact
     Outcome
     solve_by_plugin();
 
+    /**
+     * Whether the solves with M take ML (<Linear solver/Preconditioner> =
+     * amg, or auto on a symmetric M of more than 2,000 unknowns in nodes
+     * of dim, with each contact on a node of its own for the Newton
+     * method); auto otherwise becomes jacobi in @p prm. Refuses what this
+     * mode cannot do (the multigrid, an AMG it cannot build, Kanno's
+     * method on a non-symmetric M).
+     */
+    bool
+    choose_preconditioner(ParameterHandler &prm) const;
+
+    /// The near null space of the AMG: the dim translations.
+    std::vector<std::vector<double>>
+    translations() const;
+
     /// mu_pi: LAPACK up to 1000 unknowns, PARPACK above.
     double
     smallest_eigenvalue_of_M();
@@ -112,6 +123,9 @@ namespace FrictionalContact
     AssembledStiffness                  M_operator{M};
     Vector                              f;
     std::unique_ptr<SparseContactMap<dim>> contact;
+    /// Whether M's solves take ML (choose_preconditioner()); the
+    /// semismooth Newton method then runs as a plugin on our form.
+    const bool                          with_amg;
     ShiftedStiffnessSolver              linear_solver;
     ContactSolverParameters<dim>        solver;
   };

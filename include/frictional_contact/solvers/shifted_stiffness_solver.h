@@ -49,13 +49,15 @@ namespace FrictionalContact
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Reads the subsection "Linear solver".
-    explicit ShiftedStiffnessSolver(ParameterHandler &prm);
+    /// Reads the subsection "Linear solver"; @p dim is the number of
+    /// displacement components per node (ML's block size).
+    ShiftedStiffnessSolver(ParameterHandler &prm, const unsigned int dim);
 
     /**
      * Keeps a reference to @p stiffness (which must outlive this object)
      * and the near null space for the AMG (one vector per rigid-body mode,
-     * each of the locally owned size). With a @p volumetric split (a
+     * each of the locally owned size, the dim translations first; or the
+     * translations alone where no coordinates are known). With a @p volumetric split (a
      * nearly incompressible body; its matrices must outlive this object
      * too), the AMG is built on its reduced stiffness A and the solves
      * with AMG go through the mixed system (volumetric_split.h).
@@ -243,6 +245,9 @@ namespace FrictionalContact
 
     void
     build_jacobi(const double sigma);
+
+    /// Displacement components per node.
+    const unsigned int dim;
 
     // Parameters.
     double       rel_tolerance;
