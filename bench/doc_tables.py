@@ -182,7 +182,42 @@ def multigrid(root):
                      "peak kB per unknown"], body)
 
 
+def fclib_scenes(root):
+    """Per exported file: our Newton method on the path auto chooses and on
+    the sparse LU, and the fastest Siconos solver that reached the
+    tolerance by the common measure."""
+    by_file = {}
+    for r in rows(root, "fclib-scenes.csv"):
+        by_file.setdefault(r["file"], []).append(r)
+    body = []
+
+    def cell(r):
+        if r is None:
+            return "-"
+        if r["success"] != "1":
+            return f"- ({r['note'] or 'error ' + r['common_error']})"
+        return f"{seconds(r['seconds'])}, {r['iterations']} it."
+
+    for name, runs in by_file.items():
+        solvers = {r["solver"]: r for r in runs}
+        ours = solvers.get("ours: semismooth Newton")
+        lu = solvers.get("ours: semismooth Newton; jacobi")
+        siconos = [r for r in runs
+                   if r["solver"].startswith("siconos") and r["success"] == "1"]
+        best = min(siconos, key=lambda r: float(r["seconds"]), default=None)
+        ratio = (f"{float(best['seconds']) / float(ours['seconds']):.1f}"
+                 if best and ours and ours["success"] == "1" else "")
+        body.append([f"{name.removesuffix('.hdf5')} ({thousands(runs[0]['n'])}, "
+                     f"{runs[0]['contacts']})", cell(ours), cell(lu),
+                     f"{best['solver'].removeprefix('siconos ')}: {cell(best)}"
+                     if best else "none", ratio])
+    return markdown(["file (n, contacts)", "ours: Newton (auto)",
+                     "ours: Newton, sparse LU", "fastest Siconos solver",
+                     "its time / ours"], body)
+
+
 TABLES = {
+    "fclib-scenes": fclib_scenes,
     "multigrid": multigrid,
     "kanno-series": kanno_series,
     "kanno-variants": kanno_variants,

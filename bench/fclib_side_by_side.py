@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Our solver and Siconos' global solvers side by side on FCLIB problems.
 
-For each FCLIB global problem (files given, the scene's exported increment
-with --scene, or by default tests/fclib/data), runs
+For each FCLIB global problem (files given, the exported increment of each
+--scene and of Kanno's example II at each of --example2-sizes, or by
+default tests/fclib/data), runs
 
   - contact --fclib with each of our methods of --methods: the semismooth
-    Newton method (the default, stopped at FCLIB error <= --tolerance) and
-    Kanno's Algorithm 2 (its own stopping rule), with the settings of
-    --parameters,
+    Newton method (the default, stopped at --tolerance) and Kanno's
+    Algorithm 2 (its own stopping rule), with the settings of --parameters;
+    "method; preconditioner" sets <Linear solver/Preconditioner> too
+    ("semismooth Newton; jacobi" is the sparse LU path, doc/fclib.md),
   - build/siconos_gfc3d with each Siconos solver of --siconos-solvers, at
     --tolerance (optional: skipped if Siconos was not found at build time),
 
@@ -18,7 +20,8 @@ solver (contact --evaluate, doc/fclib.md), success (common error <=
 first method.
 
 usage: python3 bench/fclib_side_by_side.py [problem.hdf5 ...]
-           [--scene scene.prm [--increment 1]] [--parameters file.prm]
+           [--scene scene.prm ...] [--example2-sizes 8,12] [--increment 1]
+           [--parameters file.prm]
            [--methods "semismooth Newton,accelerated primal-dual"]
            [--siconos-solvers NSN_AC,ADMM,NSGS_WR,IPM] [--tolerance 1e-8]
            [--max-iterations 10000] [--timeout 300]
@@ -29,11 +32,16 @@ import csv
 import glob
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from doc_tables import write_tables  # noqa: E402
+from run_series import scene as series_scene  # noqa: E402
 COLUMNS = ["file", "n", "contacts", "solver", "converged", "success",
            "iterations", "seconds", "own_error", "common_error",
            "v_difference_to_ours", "note"]
@@ -87,6 +95,7 @@ def sizes(output):
 
 def write_settings(path, method, arguments):
     """A parameter file for one of our methods (with --parameters included)."""
+    method, _, preconditioner = (part.strip() for part in method.partition(";"))
     with open(path, "w") as out:
         if arguments.parameters:
             out.write(f"include {os.path.abspath(arguments.parameters)}\n")
@@ -95,22 +104,39 @@ def write_settings(path, method, arguments):
             out.write(f"  subsection Semismooth Newton\n"
                       f"    set Tolerance = {arguments.tolerance}\n  end\n")
         out.write("end\n")
+        if preconditioner:
+            out.write(f"subsection Linear solver\n"
+                      f"  set Preconditioner = {preconditioner}\nend\n")
 
 
 def export_scene(contact, scene, increment, folder, timeout):
+    """The scene's exported increment, as <folder>/<scene name>.hdf5."""
+    name = os.path.splitext(os.path.basename(scene))[0]
+    scene_folder = os.path.join(folder, name)
+    os.makedirs(scene_folder)
     code, output = run([contact, "--fclib-export", str(increment),
-                        os.path.abspath(scene)], timeout, cwd=folder)
-    files = glob.glob(os.path.join(folder, "**", f"fclib-{increment:05d}.hdf5"),
+                        os.path.abspath(scene)], timeout, cwd=scene_folder)
+    files = glob.glob(os.path.join(scene_folder, "**",
+                                   f"fclib-{increment:05d}.hdf5"),
                       recursive=True)
     if code != 0 or not files:
         sys.exit(f"exporting {scene} failed:\n{output}")
-    return files[0]
+    return shutil.copy(files[0], os.path.join(folder, name + ".hdf5"))
+
+
+def example2_scene(n_y, folder):
+    """Kanno's example II (2 x 1 x 1, mu = 0.5) at N_Y = n_y."""
+    path = os.path.join(folder, f"example2_ny{n_y}.prm")
+    with open(path, "w") as out:
+        out.write(series_scene(2, n_y, 0.5, "semismooth Newton"))
+    return path
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("problems", nargs="*")
-    parser.add_argument("--scene")
+    parser.add_argument("--scene", action="append", default=[])
+    parser.add_argument("--example2-sizes", default="")
     parser.add_argument("--increment", type=int, default=1)
     parser.add_argument("--parameters")
     parser.add_argument("--methods",
@@ -132,9 +158,11 @@ def main():
         siconos = None
     work = tempfile.mkdtemp(prefix="fclib-side-by-side-")
     problems = list(arguments.problems)
-    if arguments.scene:
-        problems.append(export_scene(contact, arguments.scene,
-                                     arguments.increment, work,
+    scenes = arguments.scene + [
+        example2_scene(int(n_y), work)
+        for n_y in arguments.example2_sizes.split(",") if n_y]
+    for scene in scenes:
+        problems.append(export_scene(contact, scene, arguments.increment, work,
                                      arguments.timeout))
     if not problems:
         problems = sorted(f for f in glob.glob(
@@ -146,8 +174,9 @@ def main():
         name = os.path.basename(problem)
         ours = None
         for method in arguments.methods.split(","):
-            solution = os.path.join(work, f"{name}.{method.replace(' ', '_')}.hdf5")
-            settings = os.path.join(work, method.replace(" ", "_") + ".prm")
+            label = re.sub(r"\W+", "_", method)
+            solution = os.path.join(work, f"{name}.{label}.hdf5")
+            settings = os.path.join(work, label + ".prm")
             write_settings(settings, method, arguments)
             code, output = run([contact, "--fclib", problem, "--solution",
                                 solution, settings], arguments.timeout)
@@ -212,6 +241,7 @@ def main():
               f"| {show('v_difference_to_ours', '{:.2e}')} "
               f"| {row.get('note', '')[:80]} |")
     print(f"CSV: {arguments.csv}")
+    write_tables()
 
 
 if __name__ == "__main__":

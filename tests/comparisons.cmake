@@ -414,3 +414,12 @@ foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
       ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_reference}/output-${_scene}/statistics 1e-8)
   endforeach()
 endforeach()
+# Two bodies (MortarPreconditioner; no matrix-free path with pairs).
+foreach(_case "hertz_two_bodies_3d;.mpirun=2" "sliding_pair_friction;")
+  list(GET _case 0 _scene)
+  list(GET _case 1 _ranks)
+  contact_compare_statistics(${_scene}_multigrid.same_forces
+    "${_scene}_multigrid${_ranks};${_scene}${_ranks}"
+    ${CMAKE_CURRENT_BINARY_DIR}/${_scene}_multigrid${_ranks}/output-${_scene}_multigrid/statistics
+    ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_ranks}/output-${_scene}/statistics 1e-8)
+endforeach()

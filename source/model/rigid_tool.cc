@@ -147,10 +147,12 @@ namespace FrictionalContact
     read(file);
     if (reverse)
       for (auto &face : faces)
-        if constexpr (dim == 2)
-          std::swap(face[0], face[1]);
-        else
-          std::swap(face[1], face[2]); // lexicographic: the transposed quad
+        {
+          if constexpr (dim == 2)
+            std::swap(face[0], face[1]);
+          else
+            std::swap(face[1], face[2]); // lexicographic: the transposed quad
+        }
   }
 
 

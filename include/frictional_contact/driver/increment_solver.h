@@ -5,6 +5,7 @@
 
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/model/mortar_basis.h>
+#include <frictional_contact/model/mortar_preconditioner.h>
 #include <frictional_contact/model/contact_results.h>
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/contact_solver_parameters.h>
@@ -75,6 +76,8 @@ namespace FrictionalContact
     release()
     {
       linear_solver.release();
+      mortar_cycle.reset();
+      mortar_cycle_with_springs.reset();
       geometric.reset();
       geometric_with_springs.reset();
     }
@@ -182,6 +185,9 @@ namespace FrictionalContact
     /// the Newton systems (both on the mesh's levels, matrix-free).
     std::unique_ptr<GeometricMultigrid<dim>> geometric;
     std::unique_ptr<GeometricMultigrid<dim>> geometric_with_springs;
+    /// With contact pairs, those two for K_w of the increment's basis.
+    std::unique_ptr<MortarPreconditioner<dim>> mortar_cycle;
+    std::unique_ptr<MortarPreconditioner<dim>> mortar_cycle_with_springs;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

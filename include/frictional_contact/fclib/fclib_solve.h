@@ -17,9 +17,10 @@ namespace FrictionalContact
   /**
    * The program's --fclib mode (doc/fclib.md): solves an FCLIB global
    * problem with the method of <Contact solver/Method>. The semismooth
-   * Newton method (the default) works on FCLIB's own form (FclibNewton);
-   * the accelerated primal-dual method gets it as one incremental problem
-   * in our form. Owns the problem (every rank has the file's arrays; rank 0
+   * Newton method (the default) works on FCLIB's own form with a sparse LU
+   * (FclibNewton), or, on the AMG path (choose_preconditioner()), as the
+   * accelerated primal-dual method always does: as a plugin on one
+   * incremental problem in our form. Owns the problem (every rank has the file's arrays; rank 0
    * holds the matrices and all contacts), M in Trilinos format, the sparse
    * T, and the solvers chosen in the parameter file. Prints the paper's
    * three residuals and FCLIB's error measure.
