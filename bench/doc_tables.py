@@ -216,8 +216,25 @@ def fclib_scenes(root):
                      "its time / ours"], body)
 
 
+def preconditioners(root):
+    body = []
+    for r in rows(root, "preconditioners.csv"):
+        if r["converged"] != "1":
+            body.append([r["scene"], r["global_refinements"], r["ranks"], r["path"],
+                         "failed", "", "", ""])
+            continue
+        body.append([r["scene"], r["global_refinements"], r["ranks"], r["path"],
+                     thousands(r["d"]),
+                     f"{r['newton_iterations']} / {r['krylov_iterations']}",
+                     seconds(r["contact_solve_s"]), r["time_to_first_path"]])
+    return markdown(["scene", "global refinements", "ranks", "preconditioner",
+                     "d (last mesh)", "Newton / Krylov iterations", "contact solve",
+                     "time / first row's"], body)
+
+
 TABLES = {
     "fclib-scenes": fclib_scenes,
+    "preconditioners": preconditioners,
     "multigrid": multigrid,
     "kanno-series": kanno_series,
     "kanno-variants": kanno_variants,
