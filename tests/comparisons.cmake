@@ -399,9 +399,12 @@ contact_compare_statistics(flat_punch_2d.rotated
 # against ML's: the same contact forces to the solver tolerance (1e-8
 # relative to the largest force of each column). Each entry: scene, its
 # run's suffix, the variant's suffix per path (cattaneo_2d_matrix_free on
-# 3 ranks: the nodal blocks are summed across the ranks).
+# 3 ranks: the nodal blocks are summed across the ranks; example2_ny4 is
+# Kanno's method, whose primal steps take the V-cycle of K where auto would
+# take ML).
 foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
-              "cattaneo_2d;;;.mpirun=3")
+              "cattaneo_2d;;;.mpirun=3"
+              "example2_ny4;.mpirun=2;.mpirun=2;.mpirun=2")
   list(GET _case 0 _scene)
   list(GET _case 1 _reference)
   list(GET _case 2 _multigrid)

@@ -36,7 +36,6 @@ namespace FrictionalContact
     preconditioner_basis.reset();
     linear_solver.set_geometric_multigrid(nullptr, nullptr);
     mortar_cycle.reset();
-    mortar_cycle_with_springs.reset();
     geometric.reset();
     geometric_with_springs.reset();
     if (!contact.has_pairs())
@@ -86,8 +85,9 @@ namespace FrictionalContact
         return;
       }
     // The Newton systems' springs change the levels' operators: they get
-    // a cycle of their own, on the same levels.
-    if (model.get_contact().active())
+    // a cycle of their own, on the same levels (not with contact pairs:
+    // MortarPreconditioner).
+    if (model.get_contact().active() && !model.get_contact().has_pairs())
       {
         geometric_with_springs = std::make_unique<GeometricMultigrid<dim>>();
         geometric_with_springs->initialize_from(*geometric);
@@ -208,7 +208,6 @@ namespace FrictionalContact
           {
             linear_solver.set_geometric_multigrid(nullptr, nullptr);
             mortar_cycle.reset();
-            mortar_cycle_with_springs.reset();
           }
         mortar = std::make_shared<MortarBasis<dim>>(body, contact);
         if (preconditioner_basis)
@@ -228,14 +227,11 @@ namespace FrictionalContact
           }
         if (geometric)
           {
+            // One cycle of K for K_w and for the Newton systems.
             mortar_cycle =
               std::make_unique<MortarPreconditioner<dim>>(*geometric, *mortar);
-            if (geometric_with_springs)
-              mortar_cycle_with_springs =
-                std::make_unique<MortarPreconditioner<dim>>(
-                  *geometric_with_springs, *mortar);
             linear_solver.set_geometric_multigrid(mortar_cycle.get(),
-                                                  mortar_cycle_with_springs.get());
+                                                  mortar_cycle.get());
           }
         mu_pi = 0;
         const TrilinosWrappers::MPI::Vector load_in_u = load;

@@ -2,7 +2,6 @@
 
 #include <frictional_contact/model/mortar_basis.h>
 
-#include <algorithm>
 #include <map>
 
 namespace FrictionalContact
@@ -91,51 +90,6 @@ namespace FrictionalContact
     // (I - E) u = 2 u - Q u.
     basis.vmult(w, u);
     w.sadd(-1., 2., u);
-  }
-
-
-
-  template <int dim>
-  NodalBlock
-  MortarBasis<dim>::spring_to_u(const NodalBlock &spring) const
-  {
-    // The dofs of the block in u: the slave dofs first, then the master
-    // dofs of their rows; B[a][k] the coefficient of dof k in row a.
-    const IndexSet    &owned = basis.locally_owned_domain_indices();
-    const unsigned int n_slave = spring.dofs.size();
-    NodalBlock         in_u;
-    in_u.dofs = spring.dofs;
-    std::vector<std::vector<std::pair<unsigned int, double>>> B(n_slave);
-    for (unsigned int a = 0; a < n_slave; ++a)
-      {
-        B[a].emplace_back(a, 1.);
-        if (!owned.is_element(spring.dofs[a]))
-          return spring;
-        for (auto entry = basis.begin(spring.dofs[a]);
-             entry != basis.end(spring.dofs[a]);
-             ++entry)
-          if (entry->column() != spring.dofs[a] && entry->value() != 0)
-            {
-              if (!owned.is_element(entry->column()))
-                return spring;
-              const auto position =
-                std::find(in_u.dofs.begin(), in_u.dofs.end(), entry->column());
-              B[a].emplace_back(position - in_u.dofs.begin(), -entry->value());
-              if (position == in_u.dofs.end())
-                in_u.dofs.push_back(entry->column());
-            }
-      }
-    const unsigned int n = in_u.dofs.size();
-    in_u.values.assign(n * n, 0.);
-    for (unsigned int a = 0; a < n_slave; ++a)
-      for (unsigned int b = 0; b < n_slave; ++b)
-        {
-          const double s_ab = spring.values[a * n_slave + b];
-          for (const auto &[k, b_ak] : B[a])
-            for (const auto &[l, b_bl] : B[b])
-              in_u.values[k * n + l] += b_ak * s_ab * b_bl;
-        }
-    return in_u;
   }
 
 

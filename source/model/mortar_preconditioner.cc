@@ -16,19 +16,6 @@ namespace FrictionalContact
     basis.displacement_to_w(displacement, dst);
   }
 
-  template <int dim>
-  void
-  MortarPreconditioner<dim>::set_springs(const std::vector<NodalBlock> &springs)
-  {
-    std::vector<NodalBlock> in_u;
-    in_u.reserve(springs.size());
-    for (const NodalBlock &spring : springs)
-      in_u.push_back(basis.spring_to_u(spring));
-    of_u.set_springs(in_u);
-  }
-
-
-
   template class MortarPreconditioner<2>;
   template class MortarPreconditioner<3>;
 } // namespace FrictionalContact

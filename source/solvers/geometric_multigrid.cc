@@ -338,21 +338,17 @@ namespace FrictionalContact
     std::vector<std::vector<typename LevelOperator::Spring>> per_level(n_level);
     // A spring goes to the level of its node's active cells and to each
     // coarser level where the node is a vertex, scaled there as the
-    // diagonal of K grows with the cells (2^(dim-2) per level). A block on
-    // several nodes (contact pairs, MortarPreconditioner) goes where all
-    // its nodes are vertices of one level.
+    // diagonal of K grows with the cells (2^(dim-2) per level).
     for (const NodalBlock &block : springs)
       for (unsigned int depth = 0;; ++depth)
         {
           typename LevelOperator::Spring spring;
-          unsigned int                   level = numbers::invalid_unsigned_int;
+          unsigned int                   level = 0;
           bool                           found = true;
           for (const auto dof : block.dofs)
             {
               const auto it = active_to_level.find(dof);
-              if (it == active_to_level.end() || it->second.size() <= depth ||
-                  (level != numbers::invalid_unsigned_int &&
-                   it->second[depth].first != level))
+              if (it == active_to_level.end() || it->second.size() <= depth)
                 {
                   found = false;
                   break;

@@ -93,7 +93,8 @@ namespace FrictionalContact
                       "solves and the Newton systems a V-cycle on the levels "
                       "of the mesh (matrix-free, Chebyshev smoothing; the "
                       "standard element only, else AMG), for the primal "
-                      "steps as auto.");
+                      "steps Jacobi or the Cholesky factor as auto, else the "
+                      "V-cycle of K.");
     prm.declare_entry("Multigrid smoother degree",
                       "2",
                       Patterns::Integer(1, 10),
@@ -521,6 +522,16 @@ namespace FrictionalContact
             last_linear_solve = "CG iterations (Cholesky)";
             const Timer timer;
             cg.solve(op, x, b, factor);
+            krylov_seconds += timer.wall_time();
+          }
+        else if (use_geometric_multigrid(0.))
+          {
+            // A primal step that Jacobi and the factor leave: the cycle of
+            // K serves K + sigma I too, relative to which K + sigma I has
+            // its spectrum in [1, 1 + sigma / lambda_min(K)].
+            last_linear_solve = "CG iterations (geometric multigrid of K)";
+            const Timer timer;
+            cg.solve(op, x, b, *geometric_cycle);
             krylov_seconds += timer.wall_time();
           }
         else if (volumetric_split() != nullptr)

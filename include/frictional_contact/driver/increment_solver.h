@@ -77,7 +77,6 @@ namespace FrictionalContact
     {
       linear_solver.release();
       mortar_cycle.reset();
-      mortar_cycle_with_springs.reset();
       geometric.reset();
       geometric_with_springs.reset();
     }
@@ -185,9 +184,8 @@ namespace FrictionalContact
     /// the Newton systems (both on the mesh's levels, matrix-free).
     std::unique_ptr<GeometricMultigrid<dim>> geometric;
     std::unique_ptr<GeometricMultigrid<dim>> geometric_with_springs;
-    /// With contact pairs, those two for K_w of the increment's basis.
+    /// With contact pairs, the first for K_w of the increment's basis.
     std::unique_ptr<MortarPreconditioner<dim>> mortar_cycle;
-    std::unique_ptr<MortarPreconditioner<dim>> mortar_cycle_with_springs;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

@@ -3,7 +3,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <frictional_contact/solvers/nodal_block.h>
 #include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
@@ -65,16 +64,6 @@ namespace FrictionalContact
     /// w = Q^-1 u = u - E u (E E = 0: no master dof is a slave dof).
     void
     displacement_to_w(const Vector &u, Vector &w) const;
-
-    /**
-     * A spring S on the dofs of a slave node in w (a Newton system's node
-     * condition), as the block Q^-T S Q^-1 = B^T S B acts in u: on the
-     * slave dofs and the master dofs of their rows of E, with
-     * B = [I, -E_rows]. Where one of those master dofs is owned by another
-     * rank, the spring as it is (on the slave dofs alone).
-     */
-    NodalBlock
-    spring_to_u(const NodalBlock &spring) const;
 
     /// The rigid-body modes (locally owned vectors) in w, for the AMG.
     std::vector<std::vector<double>>
