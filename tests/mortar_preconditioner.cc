@@ -22,42 +22,19 @@
 
 #include <iostream>
 
+#include "with_springs.h"
+
 using namespace FrictionalContact;
 using TrilinosVector = TrilinosWrappers::MPI::Vector;
 
 namespace
 {
-  /// x -> (K + S) x with S given as blocks of this rank's dofs.
-  class WithSprings
-  {
-  public:
-    WithSprings(const StiffnessOperator &K, const std::vector<NodalBlock> &springs)
-      : K(K)
-      , springs(springs)
-    {}
-
-    void
-    vmult(TrilinosVector &dst, const TrilinosVector &src) const
-    {
-      K.vmult(dst, src);
-      for (const NodalBlock &block : springs)
-        {
-          const unsigned int n = block.dofs.size();
-          for (unsigned int a = 0; a < n; ++a)
-            for (unsigned int b = 0; b < n; ++b)
-              dst[block.dofs[a]] += block.values[a * n + b] * src[block.dofs[b]];
-        }
-    }
-
-  private:
-    const StiffnessOperator       &K;
-    const std::vector<NodalBlock> &springs;
-  };
+  using SpringOperator = WithSprings<StiffnessOperator>;
 
   /// PCG iterations to reduce |b| by 1e-8 for b = A x, x = sin(i).
   template <typename Preconditioner>
   unsigned int
-  cg_iterations(const WithSprings &A, const Preconditioner &M, const TrilinosVector &x)
+  cg_iterations(const SpringOperator &A, const Preconditioner &M, const TrilinosVector &x)
   {
     TrilinosVector b(x), solution(x);
     A.vmult(b, x);
@@ -116,9 +93,9 @@ main(int argc, char *argv[])
   const MortarPreconditioner<3> springs_on_slaves(cycle_with_springs, basis);
 
   const std::vector<NodalBlock> none;
-  const unsigned int on_K   = cg_iterations(WithSprings(body.stiffness(), none), cycle, x);
-  const unsigned int on_K_w = cg_iterations(WithSprings(basis.stiffness(), none), in_w, x);
-  const WithSprings  sprung(basis.stiffness(), springs);
+  const unsigned int on_K   = cg_iterations(SpringOperator(body.stiffness(), none), cycle, x);
+  const unsigned int on_K_w = cg_iterations(SpringOperator(basis.stiffness(), none), in_w, x);
+  const SpringOperator sprung(basis.stiffness(), springs);
   const unsigned int cycle_of_K  = cg_iterations(sprung, in_w, x);
   const unsigned int with_slaves = cg_iterations(sprung, springs_on_slaves, x);
 

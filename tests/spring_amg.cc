@@ -31,39 +31,14 @@
 
 #include <iostream>
 
+#include "with_springs.h"
+
 using namespace FrictionalContact;
 using TrilinosVector = TrilinosWrappers::MPI::Vector;
 
 namespace
 {
-  /// x -> (K + S) x with S given as nodal blocks (of this rank's dofs).
-  class SpringMatrix
-  {
-  public:
-    SpringMatrix(const TrilinosWrappers::SparseMatrix &K,
-                 const std::vector<NodalBlock>        &springs)
-      : K(K)
-      , springs(springs)
-    {}
-
-    void
-    vmult(TrilinosVector &dst, const TrilinosVector &src) const
-    {
-      K.vmult(dst, src);
-      for (const NodalBlock &block : springs)
-        {
-          const unsigned int n = block.dofs.size();
-          for (unsigned int a = 0; a < n; ++a)
-            for (unsigned int b = 0; b < n; ++b)
-              dst[block.dofs[a]] +=
-                block.values[a * n + b] * src[block.dofs[b]];
-        }
-    }
-
-  private:
-    const TrilinosWrappers::SparseMatrix &K;
-    const std::vector<NodalBlock>        &springs;
-  };
+  using SpringMatrix = WithSprings<TrilinosWrappers::SparseMatrix>;
 
   /// The preconditioner of K that a ShiftedStiffnessSolver made.
   class StiffnessAMG
