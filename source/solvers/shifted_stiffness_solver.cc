@@ -110,11 +110,10 @@ namespace FrictionalContact
                       "1M about a third of the memory per unknown of the "
                       "ML path, so about three times the unknowns fit "
                       "(doc/performance.md, \"Geometric multigrid\"). Needs "
-                      "Preconditioner = geometric multigrid; the semismooth "
-                      "Newton method, or Kanno's method where its primal "
-                      "steps take Jacobi (ML and the Cholesky factor need "
-                      "K's entries); not for B-bar bodies, contact pairs or "
-                      "--fclib-export.");
+                      "Preconditioner = geometric multigrid (Kanno's primal "
+                      "steps then take Jacobi or the V-cycle of K, as ML "
+                      "and the Cholesky factor need K's entries); not for "
+                      "B-bar bodies, contact pairs or --fclib-export.");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),
