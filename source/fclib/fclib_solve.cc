@@ -76,22 +76,22 @@ namespace FrictionalContact
       choice == "amg" || (choice == "auto" && fclib.n > largest_size_without_amg);
     const double asymmetric =
       (amg_considered || !newton) ? asymmetry(fclib.M) : 0;
-    if (!newton && asymmetric > 1e-10)
-      throw InputError(
-        "the FCLIB file '" + file_name +
-        "' has a matrix M that is not symmetric (max |m_ij - m_ji| / "
-        "sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) +
-        "); Kanno's method needs M symmetric positive definite: use "
-        "<Contact solver/Method> = semismooth Newton");
+    const bool        symmetric = asymmetric <= 1e-10;
+    const std::string by_how_much =
+      "(max |m_ij - m_ji| / sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) + ")";
+    if (!newton && !symmetric)
+      throw InputError("the FCLIB file '" + file_name +
+                       "' has a matrix M that is not symmetric " + by_how_much +
+                       "; Kanno's method needs M symmetric positive "
+                       "definite: use <Contact solver/Method> = semismooth "
+                       "Newton");
     std::string why_not;
     if (fclib.n % dim != 0)
       why_not = "the AMG takes the unknowns as nodes of " +
                 std::to_string(dim) + " components, and the file has " +
                 std::to_string(fclib.n) + " unknowns";
-    else if (asymmetric > 1e-10)
-      why_not = "M is not symmetric (max |m_ij - m_ji| / sqrt(|m_ii m_jj|) = " +
-                Input::to_text(asymmetric) +
-                ") and the AMG path solves with conjugate gradients";
+    else if (!symmetric)
+      why_not = "M is not symmetric " + by_how_much + " and the AMG path solves with conjugate gradients";
     else if (newton && !contacts_on_own_nodes(fclib))
       why_not = "contacts share nodes (several contacts on one body, say), "
                 "and the semismooth Newton method's AMG path takes each "
