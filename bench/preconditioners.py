@@ -6,9 +6,11 @@ for each scene file of --scenes, each number of global refinements of
 Newton method: unknowns of the last mesh, Newton and Krylov iterations of
 all increments and mesh cycles, the contact solve's seconds and its ratio
 to the first path's. For what the scene files' own benches do not show:
-contact pairs and adapted meshes under the geometric multigrid
-(doc/performance.md, "Geometric multigrid"). Rewrites doc/benchmarks/
-preconditioners.csv (or --csv) and the tables of doc/ from the CSVs.
+contact pairs, adapted meshes and B-bar bodies under the geometric
+multigrid (doc/performance.md, "Geometric multigrid"). A scene written
+file@1 takes those refinements instead of --refinements. Rewrites
+doc/benchmarks/preconditioners.csv (or --csv) and the tables of doc/ from
+the CSVs.
 
 usage: bench/preconditioners.py [--scenes parameters/ball_on_plate.prm,...]
                                 [--refinements 1,2]
@@ -63,7 +65,8 @@ def measure(contact, scene, refinements, path, ranks):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", default="parameters/ball_on_plate.prm,"
-                                            "parameters/hertz_3d.prm")
+                                            "parameters/hertz_3d.prm,"
+                                            "parameters/hertz_3d_rubber.prm@1")
     parser.add_argument("--refinements", default="1,2")
     parser.add_argument("--paths", default="amg;geometric multigrid")
     parser.add_argument("--ranks", type=int, default=1)
@@ -72,8 +75,9 @@ def main():
     parser.add_argument("--contact", default=os.path.join(ROOT, "build", "contact"))
     args = parser.parse_args()
     rows = []
-    for scene in args.scenes.split(","):
-        for refinements in args.refinements.split(","):
+    for entry in args.scenes.split(","):
+        scene, _, own = entry.partition("@")
+        for refinements in (own or args.refinements).split(","):
             first = None
             for path in args.paths.split(";"):
                 row = measure(args.contact, scene, int(refinements), path, args.ranks)

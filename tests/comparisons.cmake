@@ -417,6 +417,22 @@ foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
       ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_reference}/output-${_scene}/statistics 1e-8)
   endforeach()
 endforeach()
+# B-bar bodies: the mixed solves with the V-cycle of the split's A
+# (FGMRES): Newton with friction, Kanno's method (against the Newton run
+# with ML), one elastic solve.
+contact_compare_statistics(extreme_nu_04999_newton_multigrid.same_forces
+  "extreme_nu_04999_newton_multigrid;extreme_nu_04999_newton"
+  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton_multigrid/output-extreme_nu_04999_newton_multigrid/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton/output-extreme_nu_04999_newton/statistics 1e-8)
+contact_compare_statistics(example2_ny4_nu_04999_multigrid.same_forces
+  "example2_ny4_nu_04999_multigrid;extreme_nu_04999_newton"
+  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4_nu_04999_multigrid/output-example2_ny4_nu_04999_multigrid/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton/output-extreme_nu_04999_newton/statistics 1e-8)
+contact_compare_tables(lame_3d_multigrid.same_displacement
+  "lame_3d_multigrid.mpirun=2;lame_3d.mpirun=2"
+  ${CMAKE_CURRENT_BINARY_DIR}/lame_3d.mpirun=2/output-lame_3d/displacement-00001.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/lame_3d_multigrid.mpirun=2/output-lame_3d_multigrid/displacement-00001.csv
+  --keys x,y,z --columns ux,uy,uz --tolerance 1e-8)
 # Two bodies (MortarPreconditioner; no matrix-free path with pairs).
 foreach(_case "hertz_two_bodies_3d;.mpirun=2" "sliding_pair_friction;")
   list(GET _case 0 _scene)

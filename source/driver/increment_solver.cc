@@ -45,8 +45,7 @@ namespace FrictionalContact
                                body.volumetric_split());
     // The cycles of K in u; with contact pairs each increment's K_w gets
     // them through its basis (MortarPreconditioner).
-    if (linear_solver.wants_geometric_multigrid() &&
-        !model.get_materials().any_mean_dilatation())
+    if (linear_solver.wants_geometric_multigrid())
       make_geometric_multigrid(model);
     mu_pi = 0;
     if (contact.active())
@@ -60,18 +59,32 @@ namespace FrictionalContact
   void
   IncrementSolver<dim>::make_geometric_multigrid(const Model<dim> &model)
   {
+    const ElasticBody<dim> &body = model.get_body();
+    // A body with a volumetric split (B-bar, nearly incompressible): the
+    // mixed solves precondition its A, whose coarse levels are those of a
+    // compressible body; its condensed K has no level operators here.
+    const bool split = body.volumetric_split().reduced_stiffness != nullptr;
+    if (split && !linear_solver.solves_mixed())
+      {
+        pcout << "Geometric multigrid: not for the condensed stiffness of a "
+                 "B-bar body (<Nearly incompressible solves> = condensed); "
+                 "the solves take the AMG (Trilinos ML) instead"
+              << std::endl;
+        return;
+      }
     geometric = std::make_unique<GeometricMultigrid<dim>>();
-    geometric->initialize(model.get_body().get_dof_handler(),
+    geometric->initialize(body.get_dof_handler(),
                           model.held_boundaries(),
-                          model.get_body().lame_parameters(),
-                          model.get_body().get_constraints(),
-                          model.get_body().stiffness(),
+                          split ? body.reduced_lame_parameters() :
+                                  body.lame_parameters(),
+                          body.get_constraints(),
+                          body.stiffness(),
                           linear_solver.multigrid_smoother_degree());
     linear_solver.multigrid_setup_seconds += geometric->setup_seconds;
     if (geometric->n_levels() == 1 &&
         geometric->coarse_size() >
           GeometricMultigrid<dim>::largest_jacobi_coarse_size &&
-        model.get_body().stiffness().is_assembled())
+        body.stiffness().is_assembled())
       {
         // No levels (a mesh from a file, non-matching stacked blocks): the
         // "cycle" would be ML on the whole K, rebuilt with the springs at

@@ -300,6 +300,19 @@ namespace FrictionalContact
 
 
   template <int dim>
+  LameParameters
+  ElasticBody<dim>::reduced_lame_parameters() const
+  {
+    LameParameters lame = lame_parameters();
+    for (auto &[id, lambda_mu] : lame)
+      lambda_mu =
+        VolumetricBlocks<dim>::reduced_lame_parameters(materials.of(id), lambda_mu);
+    return lame;
+  }
+
+
+
+  template <int dim>
   void
   ElasticBody<dim>::internal_force(const Vector &u, Vector &force) const
   {

@@ -204,6 +204,20 @@ namespace FrictionalContact
             stiffness_bound};
   }
 
+  template <int dim>
+  std::array<double, 2>
+  VolumetricBlocks<dim>::reduced_lame_parameters(
+    const LinearElasticMaterial<dim> &material,
+    const std::array<double, 2>      &of_stiffness)
+  {
+    if (penalty_modulus(material) == 0)
+      return of_stiffness;
+    const double G = material.shear_modulus;
+    return {{reduced_bulk_modulus(material) - 2. * G / dim, G}};
+  }
+
+
+
   template class VolumetricBlocks<2>;
   template class VolumetricBlocks<3>;
 } // namespace FrictionalContact

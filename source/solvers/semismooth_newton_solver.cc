@@ -177,6 +177,7 @@ namespace FrictionalContact
         ProjectedPreconditioner<dim, ConditionPreconditioner<dim>>(
           preconditioner, P),
         linear_solver.volumetric_split(),
+        linear_solver.preconditioner_varies(),
         any_slip,
         linear_solver.maximum_iterations(),
         std::max(reduction * rhs.l2_norm(), floor), rhs, w);

@@ -91,8 +91,9 @@ namespace FrictionalContact
                       "factorization for every solve on one process (AMG "
                       "on several). geometric multigrid: for the elastic "
                       "solves and the Newton systems a V-cycle on the levels "
-                      "of the mesh (matrix-free, Chebyshev smoothing; the "
-                      "standard element only, else AMG), for the primal "
+                      "of the mesh (matrix-free, Chebyshev smoothing; for a "
+                      "B-bar body the cycle of its compressible part in the "
+                      "mixed solves, AMG with condensed solves), for the primal "
                       "steps Jacobi or the Cholesky factor as auto, else the "
                       "V-cycle of K.");
     prm.declare_entry("Multigrid smoother degree",
@@ -289,7 +290,7 @@ namespace FrictionalContact
   ShiftedStiffnessSolver::use_geometric_multigrid(const double sigma) const
   {
     return sigma == 0 && preconditioner_choice == "geometric multigrid" &&
-           geometric_cycle != nullptr && volumetric_split() == nullptr;
+           geometric_cycle != nullptr;
   }
 
 
@@ -495,72 +496,68 @@ namespace FrictionalContact
                                 const Vector &b,
                                 const double  tolerance)
   {
-    SolverControl        control(max_iterations, tolerance, false, false);
-    SolverCG<Vector>     cg(control);
+    SolverControl         control(max_iterations, tolerance, false, false);
     const ShiftedOperator op(*stiffness, sigma);
+    // CG with K + sigma I, or GMRES on the mixed form where K has a split
+    // (the preconditioner then being that of the split's A).
+    const auto krylov_solve = [&](const auto        &preconditioner,
+                                  const std::string &name,
+                                  const bool         variable) -> unsigned int {
+      const Timer timer;
+      if (volumetric_split() == nullptr)
+        {
+          last_linear_solve = "CG iterations (" + name + ")";
+          SolverCG<Vector>(control).solve(op, x, b, preconditioner);
+          krylov_seconds += timer.wall_time();
+          return control.last_step();
+        }
+      last_linear_solve = "GMRES iterations (" + name + ", mixed form)";
+      const auto shift = [sigma](Vector &force, const Vector &u) {
+        if (sigma != 0)
+          force.add(sigma, u);
+      };
+      Vector     residual(b);
+      const auto true_residual = [&](const Vector &u) {
+        op.vmult(residual, u);
+        residual -= b;
+        return residual.l2_norm();
+      };
+      const unsigned int iterations = MixedVolumetric::solve(
+        split, shift, preconditioner, variable, true_residual,
+        max_iterations, tolerance, x, b);
+      krylov_seconds += timer.wall_time();
+      return iterations;
+    };
     try
       {
-        if (use_geometric_multigrid(sigma))
-          {
-            last_linear_solve = "CG iterations (geometric multigrid)";
-            const Timer timer;
-            cg.solve(op, x, b, *geometric_cycle);
-            krylov_seconds += timer.wall_time();
-          }
-        else if (use_jacobi(sigma))
+        if (use_jacobi(sigma))
           {
             build_jacobi(sigma);
             last_linear_solve = "CG iterations (Jacobi)";
             const Timer timer;
-            cg.solve(op, x, b, DiagonalPreconditioner(inverse_diagonal));
+            SolverCG<Vector>(control).solve(op, x, b,
+                                            DiagonalPreconditioner(inverse_diagonal));
             krylov_seconds += timer.wall_time();
+            return control.last_step();
           }
-        else if (use_cholesky(sigma))
+        if (use_cholesky(sigma))
           {
             const ShiftedCholesky &factor = cholesky_for(sigma);
             last_linear_solve = "CG iterations (Cholesky)";
             const Timer timer;
-            cg.solve(op, x, b, factor);
+            SolverCG<Vector>(control).solve(op, x, b, factor);
             krylov_seconds += timer.wall_time();
+            return control.last_step();
           }
-        else if (use_geometric_multigrid(0.))
-          {
-            // A primal step that Jacobi and the factor leave: the cycle of
-            // K serves K + sigma I too, relative to which K + sigma I has
-            // its spectrum in [1, 1 + sigma / lambda_min(K)].
-            last_linear_solve = "CG iterations (geometric multigrid of K)";
-            const Timer timer;
-            cg.solve(op, x, b, *geometric_cycle);
-            krylov_seconds += timer.wall_time();
-          }
-        else if (volumetric_split() != nullptr)
-          {
-            const auto &amg     = amg_for(sigma);
-            last_linear_solve = "GMRES iterations (AMG, mixed form)";
-            const Timer timer;
-            const auto  shift = [sigma](Vector &force, const Vector &u) {
-              if (sigma != 0)
-                force.add(sigma, u);
-            };
-            Vector     residual(b);
-            const auto true_residual = [&](const Vector &u) {
-              op.vmult(residual, u);
-              residual -= b;
-              return residual.l2_norm();
-            };
-            const unsigned int iterations = MixedVolumetric::solve(
-              split, shift, amg, true_residual, max_iterations, tolerance, x, b);
-            krylov_seconds += timer.wall_time();
-            return iterations;
-          }
-        else
-          {
-            const auto &amg     = amg_for(sigma);
-            last_linear_solve = "CG iterations (AMG)";
-            const Timer timer;
-            cg.solve(op, x, b, amg);
-            krylov_seconds += timer.wall_time();
-          }
+        // The cycle of K (or A) serves K + sigma I too (a primal step that
+        // Jacobi and the factor leave), relative to which K + sigma I has
+        // its spectrum in [1, 1 + sigma / lambda_min(K)].
+        if (use_geometric_multigrid(0.))
+          return krylov_solve(*geometric_cycle,
+                              sigma == 0 ? "geometric multigrid" :
+                                           "geometric multigrid of K",
+                              true);
+        return krylov_solve(amg_for(sigma), "AMG", false);
       }
     catch (const SolverControl::NoConvergence &e)
       {
@@ -573,6 +570,5 @@ namespace FrictionalContact
                    "iterations> or <Linear solver/Relative tolerance>";
         throw SolverError(message.str());
       }
-    return control.last_step();
   }
 } // namespace FrictionalContact

@@ -176,6 +176,12 @@ namespace FrictionalContact
     LameParameters
     lame_parameters() const;
 
+    /// Those of the split's reduced stiffness A where a body has a split
+    /// (VolumetricBlocks::reduced_lame_parameters()), else of K: what the
+    /// geometric multigrid preconditions in the mixed solves.
+    LameParameters
+    reduced_lame_parameters() const;
+
     /// K with its volumetric part held apart, for a nearly incompressible
     /// (B-bar) body; empty (null pointers) otherwise.
     VolumetricSplit

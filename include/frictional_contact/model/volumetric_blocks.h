@@ -11,6 +11,7 @@
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
+#include <array>
 #include <vector>
 
 namespace FrictionalContact
@@ -70,6 +71,17 @@ namespace FrictionalContact
     /// The split, for the solvers (empty unless active()).
     VolumetricSplit
     split() const;
+
+    /**
+     * Lame's lambda and mu of A on the cells of @p material if the split
+     * takes their volumetric part (kappa_0 - 2 G / dim and G: the bulk
+     * modulus of nu = 0.4, which A has as a mean dilatation, here as at
+     * Gauss points, as the geometric multigrid's operators take it);
+     * @p of_stiffness (K's) otherwise.
+     */
+    static std::array<double, 2>
+    reduced_lame_parameters(const LinearElasticMaterial<dim> &material,
+                            const std::array<double, 2>      &of_stiffness);
 
   private:
     const Materials<dim> &materials;

@@ -356,14 +356,16 @@ namespace FrictionalContact
      * a slipping node makes A non-symmetric, else CG; with a @p volumetric
      * split of K (a nearly incompressible body), GMRES on the mixed form
      * of A (volumetric_split.h), the preconditioner then being that of the
-     * split's reduced stiffness. Returns the Krylov iterations; throws
-     * SolverControl::NoConvergence.
+     * split's reduced stiffness. GMRES is flexible (FGMRES) for a
+     * @p variable_preconditioner (the geometric multigrid's V-cycle).
+     * Returns the Krylov iterations; throws SolverControl::NoConvergence.
      */
     template <int dim, typename Preconditioner>
     unsigned int
     solve_newton_system(const ContactStiffness<dim> &A,
                         const Preconditioner        &preconditioner,
                         const VolumetricSplit       *volumetric,
+                        const bool                   variable_preconditioner,
                         const bool                   non_symmetric,
                         const unsigned int           max_iterations,
                         const double                 goal,
@@ -385,6 +387,7 @@ namespace FrictionalContact
           return MixedVolumetric::solve(*volumetric,
                                         finish,
                                         preconditioner,
+                                        variable_preconditioner,
                                         true_residual,
                                         max_iterations,
                                         goal,
@@ -394,9 +397,14 @@ namespace FrictionalContact
       SolverControl control(max_iterations, goal, false, false);
       if (non_symmetric)
         {
-          SolverGMRES<Vector> gmres(
-            control, typename SolverGMRES<Vector>::AdditionalData(50, true));
-          gmres.solve(A, w, rhs, preconditioner);
+          if (variable_preconditioner)
+            SolverFGMRES<Vector>(control,
+                                 typename SolverFGMRES<Vector>::AdditionalData(50))
+              .solve(A, w, rhs, preconditioner);
+          else
+            SolverGMRES<Vector>(control,
+                                typename SolverGMRES<Vector>::AdditionalData(50, true))
+              .solve(A, w, rhs, preconditioner);
         }
       else
         {

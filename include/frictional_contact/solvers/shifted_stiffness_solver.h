@@ -75,6 +75,14 @@ namespace FrictionalContact
       return split.reduced_stiffness != nullptr ? &split : nullptr;
     }
 
+    /// Whether the solves go through a volumetric split where K has one
+    /// (<Nearly incompressible solves> = mixed).
+    bool
+    solves_mixed() const
+    {
+      return mixed_solves;
+    }
+
     /**
      * Solves with @p stiffness (and @p volumetric) from now on, but keeps
      * the preconditioners, built on the matrix initialize() was given
@@ -149,6 +157,16 @@ namespace FrictionalContact
     relative_tolerance() const
     {
       return rel_tolerance;
+    }
+
+    /// Whether the preconditioner of the elastic solves and the Newton
+    /// systems is not a fixed linear map: the geometric multigrid's V-cycle
+    /// (single precision, a coarse CG to 1e-3), for which GMRES must be
+    /// flexible.
+    bool
+    preconditioner_varies() const
+    {
+      return use_geometric_multigrid(0.);
     }
 
     /// Whether spring_preconditioner() is the geometric multigrid.
