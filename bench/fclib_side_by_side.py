@@ -25,7 +25,7 @@ usage: python3 bench/fclib_side_by_side.py [problem.hdf5 ...]
            [--methods "semismooth Newton,accelerated primal-dual"]
            [--siconos-solvers NSN_AC,ADMM,NSGS_WR,IPM] [--tolerance 1e-8]
            [--max-iterations 10000] [--timeout 300]
-           [--csv doc/benchmarks/fclib.csv] [--build build]
+           [--csv doc/benchmarks/fclib.csv] [--replace-rows] [--build build]
 """
 import argparse
 import csv
@@ -132,6 +132,27 @@ def example2_scene(n_y, folder):
     return path
 
 
+def merged_rows(path, rows):
+    """The rows of the CSV at @p path with those of each file in @p rows
+    replaced by the new ones, in the old order (new files at the end)."""
+    with open(path, newline="") as f:
+        old = list(csv.DictReader(f))
+    new_by_file = {}
+    for row in rows:
+        new_by_file.setdefault(row["file"], []).append(row)
+    merged = []
+    for row in old:
+        if row["file"] not in new_by_file:
+            merged.append(row)
+        elif new_by_file[row["file"]] is not None:
+            merged.extend(new_by_file[row["file"]])
+            new_by_file[row["file"]] = None
+    for file_rows in new_by_file.values():
+        if file_rows is not None:
+            merged.extend(file_rows)
+    return merged
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("problems", nargs="*")
@@ -148,6 +169,9 @@ def main():
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "fclib.csv"))
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--replace-rows", action="store_true",
+                        help="keep the rows of --csv for the files not run "
+                             "and replace those of the files run")
     arguments = parser.parse_args()
 
     contact = os.path.join(arguments.build, "contact")
@@ -222,10 +246,13 @@ def main():
         common = row.get("common_error", "")
         row["success"] = int(common != "" and common <= arguments.tolerance)
     os.makedirs(os.path.dirname(os.path.abspath(arguments.csv)), exist_ok=True)
+    written = rows
+    if arguments.replace_rows and os.path.exists(arguments.csv):
+        written = merged_rows(arguments.csv, rows)
     with open(arguments.csv, "w", newline="") as out:
         writer = csv.DictWriter(out, fieldnames=COLUMNS)
         writer.writeheader()
-        for row in rows:
+        for row in written:
             writer.writerow({column: row.get(column, "") for column in COLUMNS})
 
     print("| file | solver | success | iterations | seconds | common error "

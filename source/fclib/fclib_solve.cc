@@ -76,7 +76,7 @@ namespace FrictionalContact
       choice == "amg" || (choice == "auto" && fclib.n > largest_size_without_amg);
     const double asymmetric =
       (amg_considered || !newton) ? asymmetry(fclib.M) : 0;
-    const bool        symmetric = asymmetric <= 1e-10;
+    const bool        symmetric = asymmetric <= largest_symmetric_asymmetry;
     const std::string by_how_much =
       "(max |m_ij - m_ji| / sqrt(|m_ii m_jj|) = " + Input::to_text(asymmetric) + ")";
     if (!newton && !symmetric)

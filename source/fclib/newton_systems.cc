@@ -253,53 +253,25 @@ namespace FrictionalContact
   std::unique_ptr<CondensedSystem>
   CondensedSystem::create(const FclibProblem &problem)
   {
-    DynamicSparsityPattern pattern(problem.n, problem.n);
-    for (const auto &e : problem.M)
-      pattern.add(e.row, e.column);
-    SparseLU M_lu(pattern);
-    for (const auto &e : problem.M)
-      M_lu.entries()[M_lu.position(e.row, e.column)] += e.value;
-    // The elimination costs m solves with the factors of M; a coupled step
-    // costs about one factorisation.
-    if (!M_lu.factorize() ||
-        problem.spacedim * problem.n_contacts() * M_lu.solve_flops >
-          elimination_cost_in_steps * M_lu.factorization_flops)
-      return nullptr;
-
     std::unique_ptr<CondensedSystem> system(new CondensedSystem(problem));
-    const unsigned int               n = problem.n, m = system->m;
-    system->free_velocity.resize(n);
-    M_lu.solve(system->free_velocity.data(), problem.f.data());
-
-    // M^{-1} H, column by column.
-    std::vector<std::vector<unsigned int>> entries_of_column(m);
-    for (unsigned int i = 0; i < problem.H.size(); ++i)
-      entries_of_column[problem.H[i].column].push_back(i);
-    system->M_inverse_H.reinit(n, m);
-    std::vector<double> column(n, 0.), solution(n);
-    for (unsigned int k = 0; k < m; ++k)
+    // The Cholesky factor where M has one; if eliminating with it does not
+    // pay, neither would it with the LU factors.
+    if (asymmetry(problem.M) <= largest_symmetric_asymmetry)
       {
-        for (const unsigned int i : entries_of_column[k])
-          column[problem.H[i].row] += problem.H[i].value;
-        M_lu.solve(solution.data(), column.data());
-        for (unsigned int i = 0; i < n; ++i)
-          system->M_inverse_H(i, k) = solution[i];
-        for (const unsigned int i : entries_of_column[k])
-          column[problem.H[i].row] = 0;
+        system->cholesky = std::make_unique<SymmetricFactor>();
+        if (!system->cholesky->factorize(system->n, problem.M))
+          system->cholesky.reset();
       }
-
-    // W = H^T M^{-1} H and q = H^T M^{-1} f + w.
-    system->W.reinit(m, m);
-    system->q = problem.w;
-    for (const auto &e : problem.H)
-      {
-        for (unsigned int j = 0; j < m; ++j)
-          system->W(e.column, j) += e.value * system->M_inverse_H(e.row, j);
-        system->q[e.column] += e.value * system->free_velocity[e.row];
-      }
+    if (system->cholesky ? !system->eliminate_by_cholesky() : !system->eliminate_by_lu())
+      return nullptr;
     for (const double w_ij : system->W)
       if (!std::isfinite(w_ij))
         return nullptr;
+
+    // q = H^T M^{-1} f + w.
+    system->q = problem.w;
+    for (const auto &e : problem.H)
+      system->q[e.column] += e.value * system->free_velocity[e.row];
 
     // rho_c from the exact diagonal block W_cc.
     const unsigned int d = problem.spacedim;
@@ -312,6 +284,75 @@ namespace FrictionalContact
           system->rho[c] = d / trace;
       }
     return system;
+  }
+
+
+
+  bool
+  CondensedSystem::worth_eliminating(const double solve_flops,
+                                     const double factorization_flops) const
+  {
+    // The elimination costs m solves with the factors of M; a coupled step
+    // costs about one factorisation.
+    return m * solve_flops <= elimination_cost_in_steps * factorization_flops;
+  }
+
+
+
+  bool
+  CondensedSystem::eliminate_by_cholesky()
+  {
+    if (!worth_eliminating(cholesky->solve_flops, cholesky->factorization_flops))
+      return false;
+    free_velocity.resize(n);
+    cholesky->solve(free_velocity.data(), problem.f.data());
+    std::vector<double> H_columns(static_cast<std::size_t>(n) * m, 0.);
+    for (const auto &e : problem.H)
+      H_columns[static_cast<std::size_t>(e.column) * n + e.row] += e.value;
+    W = cholesky->congruence(H_columns, m);
+    return true;
+  }
+
+
+
+  bool
+  CondensedSystem::eliminate_by_lu()
+  {
+    DynamicSparsityPattern pattern(n, n);
+    for (const auto &e : problem.M)
+      pattern.add(e.row, e.column);
+    SparseLU M_lu(pattern);
+    for (const auto &e : problem.M)
+      M_lu.entries()[M_lu.position(e.row, e.column)] += e.value;
+    if (!M_lu.factorize() ||
+        !worth_eliminating(M_lu.solve_flops, M_lu.factorization_flops))
+      return false;
+    free_velocity.resize(n);
+    M_lu.solve(free_velocity.data(), problem.f.data());
+
+    // M^{-1} H, column by column.
+    std::vector<std::vector<unsigned int>> entries_of_column(m);
+    for (unsigned int i = 0; i < problem.H.size(); ++i)
+      entries_of_column[problem.H[i].column].push_back(i);
+    M_inverse_H.reinit(n, m);
+    std::vector<double> column(n, 0.), solution(n);
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        for (const unsigned int i : entries_of_column[k])
+          column[problem.H[i].row] += problem.H[i].value;
+        M_lu.solve(solution.data(), column.data());
+        for (unsigned int i = 0; i < n; ++i)
+          M_inverse_H(i, k) = solution[i];
+        for (const unsigned int i : entries_of_column[k])
+          column[problem.H[i].row] = 0;
+      }
+
+    // W = H^T M^{-1} H.
+    W.reinit(m, m);
+    for (const auto &e : problem.H)
+      for (unsigned int j = 0; j < m; ++j)
+        W(e.column, j) += e.value * M_inverse_H(e.row, j);
+    return true;
   }
 
 
@@ -378,9 +419,20 @@ namespace FrictionalContact
   {
     FclibSolution s;
     s.v = free_velocity;
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int k = 0; k < m; ++k)
-        s.v[i] += M_inverse_H(i, k) * r[k];
+    if (cholesky)
+      {
+        // v = M^{-1} (f + H r): one more solve.
+        std::vector<double> H_r(n, 0.), M_inverse_H_r(n);
+        for (const auto &e : problem.H)
+          H_r[e.row] += e.value * r[e.column];
+        cholesky->solve(M_inverse_H_r.data(), H_r.data());
+        for (unsigned int i = 0; i < n; ++i)
+          s.v[i] += M_inverse_H_r[i];
+      }
+    else
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int k = 0; k < m; ++k)
+          s.v[i] += M_inverse_H(i, k) * r[k];
     s.r.assign(r.begin(), r.end());
     s.u = local_velocity(problem, s.v);
     return s;

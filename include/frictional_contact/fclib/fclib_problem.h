@@ -84,6 +84,10 @@ namespace FrictionalContact
   double
   asymmetry(const std::vector<MatrixEntry> &A);
 
+  /// The asymmetry() up to which a matrix counts as symmetric (the
+  /// round-off of a symmetric assembly).
+  constexpr double largest_symmetric_asymmetry = 1e-10;
+
   /// u = H^T v + w.
   std::vector<double>
   local_velocity(const FclibProblem &problem, const std::vector<double> &v);

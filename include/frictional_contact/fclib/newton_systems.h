@@ -5,6 +5,7 @@
 
 #include <frictional_contact/fclib/fclib_problem.h>
 #include <frictional_contact/fclib/sparse_lu.h>
+#include <frictional_contact/fclib/symmetric_factor.h>
 
 #include <memory>
 #include <vector>
@@ -138,7 +139,8 @@ namespace FrictionalContact
   {
   public:
     /// nullptr if M is singular or the elimination would cost more than
-    /// four factorisations of M.
+    /// four factorisations of M (the Cholesky factorisation where M is
+    /// symmetric positive definite, else the LU factorisation).
     static std::unique_ptr<CondensedSystem>
     create(const FclibProblem &problem);
 
@@ -164,8 +166,25 @@ namespace FrictionalContact
   private:
     explicit CondensedSystem(const FclibProblem &problem);
 
-    /// M^{-1} H (n x m), W and q.
-    FullMatrix<double> M_inverse_H, W;
-    std::vector<double> q, free_velocity;
+    /// With M's Cholesky factor (made by create()): W from all columns of
+    /// H at once; false if that does not pay.
+    bool
+    eliminate_by_cholesky();
+
+    /// With M's LU factors: M^{-1} H column by column, then W; false if M
+    /// is singular or that does not pay.
+    bool
+    eliminate_by_lu();
+
+    /// Whether eliminating v costs at most elimination_cost_in_steps
+    /// factorisations of M.
+    bool
+    worth_eliminating(const double solve_flops, const double factorization_flops) const;
+
+    /// M's Cholesky factor (for the velocities of solution()), or else
+    /// M^{-1} H (n x m); W and q.
+    std::unique_ptr<SymmetricFactor> cholesky;
+    FullMatrix<double>               M_inverse_H, W;
+    std::vector<double>              q, free_velocity;
   };
 } // namespace FrictionalContact
