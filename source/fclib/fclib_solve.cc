@@ -253,7 +253,7 @@ namespace FrictionalContact
   FclibSolve<dim>::solve_by_newton() const
   {
     const StoppingRule &stop = solver.method->stopping_rule();
-    pcout << "Solver: semismooth Newton (Alart-Curnier, sparse LU), stop at "
+    pcout << "Solver: semismooth Newton (Alart-Curnier, sparse Cholesky or LU), stop at "
              "FCLIB error <= "
           << Input::to_text(stop.tolerance) << std::endl;
     FclibNewton::Result result =
