@@ -94,6 +94,7 @@ namespace FrictionalContact
     cholmod_free_triplet(&triplet, &common);
     if (matrix == nullptr)
       return false;
+    cholmod_free_factor(&workspace->factor, &common);
     workspace->factor = cholmod_analyze(matrix, &common);
     const bool factorized =
       workspace->factor != nullptr &&

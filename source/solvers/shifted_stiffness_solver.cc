@@ -498,21 +498,24 @@ namespace FrictionalContact
   {
     SolverControl         control(max_iterations, tolerance, false, false);
     const ShiftedOperator op(*stiffness, sigma);
+    const auto cg_solve = [&](const auto        &preconditioner,
+                              const std::string &name) -> unsigned int {
+      last_linear_solve = "CG iterations (" + name + ")";
+      const Timer timer;
+      SolverCG<Vector>(control).solve(op, x, b, preconditioner);
+      krylov_seconds += timer.wall_time();
+      return control.last_step();
+    };
     // CG with K + sigma I, or GMRES on the mixed form where K has a split
     // (the preconditioner then being that of the split's A).
     const auto krylov_solve = [&](const auto        &preconditioner,
                                   const std::string &name,
                                   const bool         variable) -> unsigned int {
-      const Timer timer;
       if (volumetric_split() == nullptr)
-        {
-          last_linear_solve = "CG iterations (" + name + ")";
-          SolverCG<Vector>(control).solve(op, x, b, preconditioner);
-          krylov_seconds += timer.wall_time();
-          return control.last_step();
-        }
+        return cg_solve(preconditioner, name);
       last_linear_solve = "GMRES iterations (" + name + ", mixed form)";
-      const auto shift = [sigma](Vector &force, const Vector &u) {
+      const Timer timer;
+      const auto  shift = [sigma](Vector &force, const Vector &u) {
         if (sigma != 0)
           force.add(sigma, u);
       };
@@ -533,22 +536,10 @@ namespace FrictionalContact
         if (use_jacobi(sigma))
           {
             build_jacobi(sigma);
-            last_linear_solve = "CG iterations (Jacobi)";
-            const Timer timer;
-            SolverCG<Vector>(control).solve(op, x, b,
-                                            DiagonalPreconditioner(inverse_diagonal));
-            krylov_seconds += timer.wall_time();
-            return control.last_step();
+            return cg_solve(DiagonalPreconditioner(inverse_diagonal), "Jacobi");
           }
         if (use_cholesky(sigma))
-          {
-            const ShiftedCholesky &factor = cholesky_for(sigma);
-            last_linear_solve = "CG iterations (Cholesky)";
-            const Timer timer;
-            SolverCG<Vector>(control).solve(op, x, b, factor);
-            krylov_seconds += timer.wall_time();
-            return control.last_step();
-          }
+          return cg_solve(cholesky_for(sigma), "Cholesky");
         // The cycle of K (or A) serves K + sigma I too (a primal step that
         // Jacobi and the factor leave), relative to which K + sigma I has
         // its spectrum in [1, 1 + sigma / lambda_min(K)].
