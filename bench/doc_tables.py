@@ -232,7 +232,35 @@ def preconditioners(root):
                      "time / first row's"], body)
 
 
+def same_solutions(root):
+    """One row per scene; per path and rank count the larger of the force
+    and displacement differences from ML's run on one rank."""
+    table = rows(root, "same-solutions.csv")
+    runs = []
+    for r in table:
+        run = (r["path"], r["ranks"])
+        if r["force_difference"] or r["refused"]:
+            if run not in runs:
+                runs.append(run)
+    body = {}
+    for r in table:
+        row = body.setdefault(r["scene"], {"d": r["d"], "increments": r["increments"]})
+        if r["refused"]:
+            row[(r["path"], r["ranks"])] = "refused"
+        elif r["force_difference"]:
+            row[(r["path"], r["ranks"])] = (
+                f"{max(float(r['force_difference']), float(r['displacement_difference'])):.0e}"
+                + (" (initial mesh)" if r["mesh"] == "initial" else ""))
+    return markdown(["scene", "d", "increments"] +
+                    [f"{path}, {ranks} rank{'s' if ranks != '1' else ''}"
+                     for path, ranks in runs],
+                    [[scene, thousands(row["d"]) if row["d"] else "", row["increments"]] +
+                     [row.get(run, "") for run in runs]
+                     for scene, row in body.items()])
+
+
 TABLES = {
+    "same-solutions": same_solutions,
     "fclib-scenes": fclib_scenes,
     "preconditioners": preconditioners,
     "multigrid": multigrid,

@@ -42,11 +42,28 @@ namespace FrictionalContact
 
 
 
+  namespace
+  {
+    /// The parameters as read: before the Model, whose automatic choices
+    /// (Model::choose_matrix_free_for_memory()) may set entries that a
+    /// resumed run, on the memory it then has, decides again.
+    std::string
+    printed(const ParameterHandler &prm)
+    {
+      std::ostringstream parameters;
+      prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+      return parameters.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler &prm, const MPI_Comm comm)
     : mpi_communicator(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , output_directory(prm.get("Output directory"))
+    , parameters_as_run(printed(prm))
     , model(prm, comm)
     , adaptivity(prm)
     , driver(prm)
@@ -59,10 +76,6 @@ namespace FrictionalContact
     resume             = resume_choice == "true" ||
              (resume_if_possible && checkpoint.exists());
     postprocessors.check_increments(driver.times().size());
-
-    std::ostringstream parameters;
-    prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-    parameters_as_run = parameters.str();
   }
 
 

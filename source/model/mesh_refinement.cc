@@ -62,30 +62,33 @@ namespace FrictionalContact
   MeshRefinement<dim>::refine(parallel::distributed::Triangulation<dim> &mesh,
                               const unsigned int built_in_refinements) const
   {
-    const unsigned int refinements = built_in_refinements + global_refinements;
-    check_memory(mesh.n_global_active_cells() * std::pow(2., dim * refinements),
+    check_memory(cells_after_global_refinement(mesh, built_in_refinements),
                  mesh.get_communicator());
-    mesh.refine_global(refinements);
+    mesh.refine_global(built_in_refinements + global_refinements);
     refine_near_center(mesh);
   }
 
 
 
   template <int dim>
-  void
-  MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
+  double
+  MeshRefinement<dim>::bytes_needed(const double n_cells, const bool matrix_free)
   {
     // Measured: about 3 kB per cell in 2D and 14 kB in 3D (matrix, AMG,
     // vectors, mesh), 4 kB in 3D without K (the multigrid path with K
     // matrix-free, at d = 1.6M on 2 ranks), on top of some 180 MB per
     // rank for the libraries; planned with a tenth more.
-    const double matrix_free_per_cell = 4.4e3;
-    const double per_cell =
-      dim == 2 ? 3e3 : matrix_free_stiffness ? matrix_free_per_cell : 1.4e4;
-    const double needed = n_cells * per_cell;
-    // The share of the available memory a run may plan to use.
-    const double largest_share = 0.8;
-    double       available = 0;
+    const double per_cell = dim == 2 ? 3e3 : matrix_free ? 4.4e3 : 1.4e4;
+    return n_cells * per_cell;
+  }
+
+
+
+  template <int dim>
+  double
+  MeshRefinement<dim>::available_memory(const MPI_Comm comm)
+  {
+    double available = 0;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ifstream meminfo("/proc/meminfo");
@@ -97,13 +100,46 @@ namespace FrictionalContact
           else
             meminfo.ignore(1000, '\n');
       }
-    available = Utilities::MPI::broadcast(comm, available, 0);
+    return Utilities::MPI::broadcast(comm, available, 0);
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::fits_only_matrix_free(const double n_cells,
+                                             const double available)
+  {
+    const double budget = largest_share * available;
+    return budget > 0 && bytes_needed(n_cells, false) > budget &&
+           bytes_needed(n_cells, true) <= budget;
+  }
+
+
+
+  template <int dim>
+  double
+  MeshRefinement<dim>::cells_after_global_refinement(
+    const parallel::distributed::Triangulation<dim> &coarse_mesh,
+    const unsigned int                               built_in_refinements) const
+  {
+    return coarse_mesh.n_global_active_cells() *
+           std::pow(2., dim * (built_in_refinements + global_refinements));
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
+  {
+    const double available = available_memory(comm);
+    const double needed    = bytes_needed(n_cells, matrix_free_stiffness);
     if (available > 0 && needed > largest_share * available)
       {
         // In 3D the path without K may still fit.
-        const bool fits_matrix_free =
-          dim == 3 && !matrix_free_stiffness &&
-          n_cells * matrix_free_per_cell <= largest_share * available;
+        const bool matrix_free_fits =
+          !matrix_free_stiffness && fits_only_matrix_free(n_cells, available);
         throw InputError(
           "<Geometry>: the mesh would have " + Input::to_text(n_cells) +
           " cells and need about " + Input::to_text(needed / 1e9) +
@@ -111,11 +147,11 @@ namespace FrictionalContact
           Input::to_text(available / 1e9) +
           " GB available; use fewer cells (repetitions, <Mesh "
           "refinement/Global refinements>, <Local refinements>)" +
-          (fits_matrix_free ?
+          (matrix_free_fits ?
              std::string(", or set <Linear solver/Preconditioner> = geometric "
                          "multigrid and <Linear solver/Matrix-free stiffness> = "
                          "true (about " +
-                         Input::to_text(n_cells * matrix_free_per_cell / 1e9) +
+                         Input::to_text(bytes_needed(n_cells, true) / 1e9) +
                          " GB)") :
              std::string()));
       }

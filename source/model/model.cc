@@ -4,6 +4,7 @@
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/model.h>
 
+#include <cmath>
 #include <ostream>
 #include <set>
 
@@ -85,13 +86,6 @@ namespace FrictionalContact
 
   template <int dim>
   Model<dim>::Model(ParameterHandler &prm, const MPI_Comm comm)
-    : triangulation(comm,
-                    wants_mesh_levels(prm) ?
-                      Triangulation<dim>::limit_level_difference_at_vertices :
-                      Triangulation<dim>::none,
-                    wants_mesh_levels(prm) ?
-                      parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy :
-                      parallel::distributed::Triangulation<dim>::default_setting)
   {
     prm.enter_subsection("Geometry");
     geometry = PluginRegistry<Geometry::Interface<dim>>::create(prm);
@@ -100,24 +94,24 @@ namespace FrictionalContact
     refinement = std::make_unique<MeshRefinement<dim>>(prm);
     prm.leave_subsection();
 
-    geometry->create_coarse_mesh(triangulation);
-    bodies = geometry->body_names();
-    if (bodies.size() == 1)
-      for (const auto &cell : triangulation.cell_iterators_on_level(0))
-        cell->set_material_id(bodies.begin()->second);
+    make_coarse_mesh(prm, comm);
+    bodies         = geometry->body_names();
     boundary_names = BoundaryNames(geometry->boundary_names(),
-                                   boundary_ids_in(triangulation));
-    materials = std::make_unique<Materials<dim>>(prm, bodies);
+                                   boundary_ids_in(*triangulation));
+    materials      = std::make_unique<Materials<dim>>(prm, bodies);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
+    contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
+    if (choose_matrix_free_for_memory(prm))
+      // Again, with the levels the multigrid needs.
+      make_coarse_mesh(prm, comm);
     const bool matrix_free = wants_matrix_free_stiffness(prm);
     refinement->set_matrix_free_stiffness(matrix_free);
-    body = std::make_unique<ElasticBody<dim>>(triangulation,
+    body = std::make_unique<ElasticBody<dim>>(*triangulation,
                                               *materials,
                                               *boundary_conditions,
                                               bodies,
                                               matrix_free);
-    contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
     if (matrix_free && materials->any_mean_dilatation())
       throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
                        "B-bar bodies (nearly incompressible materials) yet: "
@@ -131,14 +125,72 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  Model<dim>::make_coarse_mesh(ParameterHandler &prm, const MPI_Comm comm)
+  {
+    const bool levels = wants_mesh_levels(prm);
+    triangulation     = std::make_unique<parallel::distributed::Triangulation<dim>>(
+      comm,
+      levels ? Triangulation<dim>::limit_level_difference_at_vertices :
+                   Triangulation<dim>::none,
+      levels ? parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy :
+                   parallel::distributed::Triangulation<dim>::default_setting);
+    geometry->create_coarse_mesh(*triangulation);
+    const auto names = geometry->body_names();
+    if (names.size() == 1)
+      for (const auto &cell : triangulation->cell_iterators_on_level(0))
+        cell->set_material_id(names.begin()->second);
+  }
+
+
+
+  template <int dim>
+  bool
+  Model<dim>::choose_matrix_free_for_memory(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    const bool automatic = prm.get("Preconditioner") == "auto" &&
+                           !prm.get_bool("Matrix-free stiffness");
+    prm.leave_subsection();
+    // B-bar bodies and contact pairs need the assembled K.
+    if (!automatic || materials->any_mean_dilatation() || contact->has_pairs())
+      return false;
+    const double n_cells = refinement->cells_after_global_refinement(
+      *triangulation, geometry->n_built_in_refinements());
+    const double available =
+      MeshRefinement<dim>::available_memory(get_mpi_communicator());
+    if (!MeshRefinement<dim>::fits_only_matrix_free(n_cells, available))
+      return false;
+    prm.enter_subsection("Linear solver");
+    prm.set("Preconditioner", "geometric multigrid");
+    prm.set("Matrix-free stiffness", "true");
+    prm.leave_subsection();
+    const auto gigabytes = [](const double bytes) {
+      return Input::to_text(std::round(bytes / 1e8) / 10) + " GB";
+    };
+    automatic_choice =
+      "Linear solver: auto takes the geometric multigrid with K matrix-free: "
+      "the mesh of " + std::to_string(static_cast<long long>(n_cells)) +
+      " cells needs about " +
+      gigabytes(MeshRefinement<dim>::bytes_needed(n_cells, false)) +
+      " with K assembled and ML, more than " +
+      Input::to_text(100 * MeshRefinement<dim>::largest_share) + " % of the " +
+      gigabytes(available) + " available, and " +
+      gigabytes(MeshRefinement<dim>::bytes_needed(n_cells, true)) + " without K";
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
   Model<dim>::setup(
     const std::function<void(parallel::distributed::Triangulation<dim> &)>
       &load_mesh)
   {
     if (load_mesh)
-      load_mesh(triangulation);
+      load_mesh(*triangulation);
     else
-      refinement->refine(triangulation, geometry->n_built_in_refinements());
+      refinement->refine(*triangulation, geometry->n_built_in_refinements());
     make_dofs_and_candidates();
   }
 
@@ -150,7 +202,7 @@ namespace FrictionalContact
     const std::function<bool(parallel::distributed::Triangulation<dim> &)> &mark,
     const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
   {
-    if (!mark(triangulation))
+    if (!mark(*triangulation))
       return false;
     using Vector = TrilinosWrappers::MPI::Vector;
     std::vector<Vector>         ghosted(fields.size());
@@ -163,11 +215,11 @@ namespace FrictionalContact
       }
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(
       body->get_dof_handler());
-    triangulation.prepare_coarsening_and_refinement();
+    triangulation->prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(old_fields);
     const Tensor<1, dim> obstacle = contact->obstacle_position();
-    MeshRefinement<dim>::restore_hanging_vertices(triangulation);
-    triangulation.execute_coarsening_and_refinement();
+    MeshRefinement<dim>::restore_hanging_vertices(*triangulation);
+    triangulation->execute_coarsening_and_refinement();
 
     make_dofs_and_candidates();
     if (contact->active())
@@ -189,7 +241,7 @@ namespace FrictionalContact
   void
   Model<dim>::make_dofs_and_candidates()
   {
-    MeshRefinement<dim>::conform_hanging_vertices(triangulation);
+    MeshRefinement<dim>::conform_hanging_vertices(*triangulation);
     body->setup();
     // Every rank must own unknowns: the solvers' collective steps
     // (PARPACK, AMG set-up) do not work with an empty share.
@@ -198,7 +250,7 @@ namespace FrictionalContact
       body->get_dof_handler().n_locally_owned_dofs(), comm);
     if (fewest_owned == 0)
       throw InputError(
-        "the mesh has " + std::to_string(triangulation.n_global_active_cells()) +
+        "the mesh has " + std::to_string(triangulation->n_global_active_cells()) +
         " cells, too few for " +
         std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
         " MPI ranks (a rank would own no unknowns): run on fewer ranks, or "
@@ -228,7 +280,9 @@ namespace FrictionalContact
       out << warning << std::endl;
     for (const std::string &note : boundary_conditions->overridden)
       out << "Note: " << note << std::endl;
-    out << "Mesh: " << triangulation.n_global_active_cells() << " cells; d = "
+    if (!automatic_choice.empty())
+      out << automatic_choice << std::endl;
+    out << "Mesh: " << triangulation->n_global_active_cells() << " cells; d = "
         << body->n_free_dofs() << " free displacement dofs of "
         << body->get_dof_handler().n_dofs() << std::endl;
     if (contact->active())

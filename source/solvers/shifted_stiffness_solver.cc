@@ -86,7 +86,11 @@ namespace FrictionalContact
                       "* sigma, else a sparse Cholesky factorization of K + "
                       "sigma_ref I (CHOLMOD) on one process if its factor "
                       "has at most 12 times the nonzeros of K, else AMG; for "
-                      "the elastic solves AMG. amg: always Trilinos ML. "
+                      "the elastic solves AMG. A 3D mesh that fits in 80 % "
+                      "of the available memory only without the assembled "
+                      "K takes geometric multigrid and Matrix-free stiffness "
+                      "instead (one line says so; not for B-bar bodies and "
+                      "contact pairs). amg: always Trilinos ML. "
                       "jacobi: always the diagonal. cholesky: the "
                       "factorization for every solve on one process (AMG "
                       "on several). geometric multigrid: for the elastic "
@@ -114,7 +118,9 @@ namespace FrictionalContact
                       "Preconditioner = geometric multigrid (Kanno's primal "
                       "steps then take Jacobi or the V-cycle of K, as ML "
                       "and the Cholesky factor need K's entries); not for "
-                      "B-bar bodies, contact pairs or --fclib-export.");
+                      "B-bar bodies, contact pairs or --fclib-export. "
+                      "Preconditioner = auto sets it where only this path "
+                      "fits in memory.");
     prm.declare_entry("Cholesky refactorization factor",
                       "1.5",
                       Patterns::Double(1.),

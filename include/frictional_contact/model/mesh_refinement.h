@@ -57,6 +57,32 @@ namespace FrictionalContact
     static void
     restore_hanging_vertices(parallel::distributed::Triangulation<dim> &mesh);
 
+    /// The share of the available memory a run may plan to use.
+    static constexpr double largest_share = 0.8;
+
+    /// The bytes a mesh of @p n_cells cells needs, with K assembled and ML
+    /// or (@p matrix_free) with K matrix-free and the geometric multigrid:
+    /// measured per cell.
+    static double
+    bytes_needed(const double n_cells, const bool matrix_free);
+
+    /// The memory this machine has available (MemAvailable, read on rank 0
+    /// and the same on every rank), in bytes; 0 where it is not known.
+    static double
+    available_memory(const MPI_Comm comm);
+
+    /// Whether a mesh of @p n_cells cells fits in largest_share of
+    /// @p available bytes with K matrix-free, but not with K assembled.
+    static bool
+    fits_only_matrix_free(const double n_cells, const double available);
+
+    /// The cells of @p coarse_mesh after its @p built_in_refinements and the
+    /// Global refinements (Local refinements add to them).
+    double
+    cells_after_global_refinement(
+      const parallel::distributed::Triangulation<dim> &coarse_mesh,
+      const unsigned int                               built_in_refinements) const;
+
     /// K is not assembled (<Linear solver/Matrix-free stiffness>): a cell
     /// needs less memory.
     void

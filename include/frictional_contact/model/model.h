@@ -71,13 +71,13 @@ namespace FrictionalContact
     const parallel::distributed::Triangulation<dim> &
     mesh() const
     {
-      return triangulation;
+      return *triangulation;
     }
 
     MPI_Comm
     get_mpi_communicator() const
     {
-      return triangulation.get_communicator();
+      return triangulation->get_communicator();
     }
 
     const ElasticBody<dim> &
@@ -123,16 +123,37 @@ namespace FrictionalContact
     void
     make_dofs_and_candidates();
 
+    /// The triangulation (with the levels of the multigrid if
+    /// <Linear solver/Preconditioner> asks for it) and the geometry's coarse
+    /// mesh in it.
+    void
+    make_coarse_mesh(ParameterHandler &prm, const MPI_Comm comm);
+
+    /**
+     * With <Linear solver/Preconditioner> = auto, a mesh (after its global
+     * refinements) that this machine holds with K matrix-free and the
+     * geometric multigrid but not with K assembled and ML: sets those two
+     * entries of @p prm, so that every class reading them later takes that
+     * path, keeps the line that says so for print_summary() and returns
+     * true. Not for B-bar bodies and contact pairs (they need the
+     * assembled K).
+     */
+    bool
+    choose_matrix_free_for_memory(ParameterHandler &prm);
+
     // Made one after the other in the constructor: each needs the ones
     // before it (the boundary names need the coarse mesh).
-    parallel::distributed::Triangulation<dim>    triangulation;
-    std::unique_ptr<Geometry::Interface<dim>>    geometry;
-    std::unique_ptr<MeshRefinement<dim>>         refinement;
+    std::unique_ptr<Geometry::Interface<dim>>                  geometry;
+    std::unique_ptr<MeshRefinement<dim>>                       refinement;
+    std::unique_ptr<parallel::distributed::Triangulation<dim>> triangulation;
     BoundaryNames                                boundary_names;
     std::map<std::string, types::material_id>    bodies;
     std::unique_ptr<Materials<dim>>              materials;
     std::unique_ptr<BoundaryConditions<dim>>     boundary_conditions;
     std::unique_ptr<ElasticBody<dim>>            body;
     std::unique_ptr<ContactOperator<dim>>        contact;
+    /// What <Linear solver/Preconditioner> = auto chose for the memory, if
+    /// it chose (choose_matrix_free_for_memory()).
+    std::string automatic_choice;
   };
 } // namespace FrictionalContact
