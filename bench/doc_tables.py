@@ -248,9 +248,13 @@ def same_solutions(root):
         if r["refused"]:
             row[(r["path"], r["ranks"])] = "refused"
         elif r["force_difference"]:
+            larger = max(float(r["force_difference"]), float(r["displacement_difference"]))
+            tight = (max(float(r["tight_force_difference"]),
+                         float(r["tight_displacement_difference"]))
+                     if r["tight_force_difference"] else None)
             row[(r["path"], r["ranks"])] = (
-                f"{max(float(r['force_difference']), float(r['displacement_difference'])):.0e}"
-                + (" (initial mesh)" if r["mesh"] == "initial" else ""))
+                f"{larger:.0e}" + (" (initial mesh)" if r["mesh"] == "initial" else "")
+                + (f"; {tight:.0e} at Tolerance 1e-12" if tight is not None else ""))
     return markdown(["scene", "d", "increments"] +
                     [f"{path}, {ranks} rank{'s' if ranks != '1' else ''}"
                      for path, ranks in runs],

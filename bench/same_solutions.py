@@ -10,13 +10,18 @@ force, as tests/compare_statistics.py) and of its vertex displacements
 displacement of the reference) from the reference run. Where a run ends
 on other adapted meshes than the reference (the parallel Kelly marking,
 the multigrid's rule of one level between neighbours at a vertex), both
-are run again on the scene's initial mesh and compared there. A path the
+are run again on the scene's initial mesh and compared there. A
+difference above --tolerance is measured again with the Newton method's
+Tolerance a hundred times smaller (1e-12): the solver tolerance times the
+conditioning falls with it, a difference of the paths would not. A path the
 program refuses for the scene (its one line) is listed as such. Rewrites
 doc/benchmarks/same-solutions.csv (or --csv) and the tables of doc/.
 
 usage: bench/same_solutions.py [--scenes parameters/a.prm,...]
                                [--paths "geometric multigrid;..."]
                                [--ranks 1,2] [--tolerance 1e-8]
+                               [--csv doc/benchmarks/same-solutions.csv]
+                               [--replace-rows]
 Run from the top of the repository after scripts/setup.sh.
 """
 import argparse
@@ -36,20 +41,26 @@ from run_series import run  # noqa: E402
 from statistics_file import names, table  # noqa: E402
 
 REFERENCE = "amg"
+# The Newton tolerance of the second comparison, for differences above
+# --tolerance: a hundredth of the default.
+TIGHT_TOLERANCE = 1e-12
 MATRIX_FREE = "geometric multigrid, K matrix-free"
 FORCES = ["Contact force x", "Contact force y", "Contact force z",
           "Normal contact force", "Tangential contact force"]
 COLUMNS = ["scene", "ranks", "path", "increments", "d", "force_difference",
-           "displacement_difference", "mesh", "same_to_tolerance", "refused"]
+           "displacement_difference", "mesh", "tight_force_difference",
+           "tight_displacement_difference", "same_to_tolerance", "refused"]
 
 
-def text(scene, path, fixed_mesh):
+def text(scene, path, fixed_mesh, tight):
     linear = (" set Preconditioner = geometric multigrid\n"
               " set Matrix-free stiffness = true\n" if path == MATRIX_FREE else
               f" set Preconditioner = {path}\n")
     return (f"include {os.path.abspath(scene)}\n"
             "set Output directory = output\n"
-            + ("subsection Mesh refinement\n set Strategy = none\nend\n" if fixed_mesh else "") +
+            + ("subsection Mesh refinement\n set Strategy = none\nend\n" if fixed_mesh else "")
+            + ("subsection Contact solver\n subsection Semismooth Newton\n"
+               f"  set Tolerance = {TIGHT_TOLERANCE}\n end\nend\n" if tight else "") +
             f"subsection Linear solver\n{linear}end\n"
             "subsection Postprocess\n subsection Visualization\n"
             "  set Write vtu = false\n  set Write csv tables = true\n end\nend\n")
@@ -66,13 +77,12 @@ def read_run(folder):
             rows = list(csv.DictReader(f))
         axes = [c for c in "xyz" if rows and c in rows[0]]
         # Two bodies have a vertex each where they touch: a position keeps
-        # the displacements of all its vertices, in order.
+        # the displacements of all its vertices.
         at = {}
         for row in rows:
             at.setdefault(tuple(round(float(row[c]), 9) for c in axes), []).append(
                 tuple(float(row["u" + c]) for c in axes))
-        displacements.append({key: [v for u in sorted(values) for v in u]
-                              for key, values in at.items()})
+        displacements.append(at)
     return forces, displacements
 
 
@@ -91,18 +101,29 @@ def force_difference(a, b):
     return worst
 
 
+def vertex_difference(a, b):
+    """The displacements of the vertices at one position, each paired with
+    the nearest of the other run's (the bodies' vertices where they touch
+    come in no order; a vertex on the ranks' border is written by each)."""
+    def distance(u, v):
+        return max(abs(p - q) for p, q in zip(u, v))
+    return max(max(min(distance(u, v) for v in b) for u in a),
+               max(min(distance(u, v) for u in a) for v in b))
+
+
 def displacement_difference(a, b):
     """Over the vertices both meshes have (adapted meshes may differ)."""
     if len(a) != len(b):
         return float("inf")
-    scale = max((abs(v) for step in a for u in step.values() for v in u), default=0) or 1.
+    scale = max((abs(x) for step in a for vertices in step.values()
+                 for u in vertices for x in u), default=0) or 1.
     worst = 0.
     for step_a, step_b in zip(a, b):
         common = step_a.keys() & step_b.keys()
         if not common:
             return float("inf")
-        worst = max(worst, max(abs(p - q) for key in common
-                               for p, q in zip(step_a[key], step_b[key])) / scale)
+        worst = max(worst, max(vertex_difference(step_a[key], step_b[key])
+                               for key in common) / scale)
     return worst
 
 
@@ -110,9 +131,9 @@ def same_meshes(a, b):
     return len(a) == len(b) and all(p.keys() == q.keys() for p, q in zip(a, b))
 
 
-def measure(contact, scene, path, ranks, fixed_mesh=False):
+def measure(contact, scene, path, ranks, fixed_mesh=False, tight=False):
     with tempfile.TemporaryDirectory() as folder:
-        code, output, _ = run(text(scene, path, fixed_mesh), ranks, folder, contact)
+        code, output, _ = run(text(scene, path, fixed_mesh, tight), ranks, folder, contact)
         forces, displacements = read_run(folder)
     sizes = re.findall(r"d = (\d+) free", output)
     refused = ""
@@ -126,6 +147,40 @@ def measure(contact, scene, path, ranks, fixed_mesh=False):
         (forces, displacements) if code == 0 else None
 
 
+def compare(args, scene, path, ranks, solution, references, row):
+    """Fills the differences of @p solution (a run of path on ranks) from
+    ML's on one rank into row; returns whether they are within
+    --tolerance, or shrink with the Newton tolerance to within it."""
+    def reference(fixed_mesh, tight):
+        if (fixed_mesh, tight) not in references:
+            references[(fixed_mesh, tight)] = measure(
+                args.contact, scene, REFERENCE, 1, fixed_mesh, tight)[1]
+        return references[(fixed_mesh, tight)]
+
+    fixed_mesh = not same_meshes(reference(False, False)[1], solution[1])
+    if fixed_mesh:
+        # Adapted meshes differ (the parallel Kelly marking, the multigrid's
+        # level rule): their solutions differ by the discretization, so
+        # compare on the initial mesh.
+        solution = measure(args.contact, scene, path, ranks, True)[1]
+    row["mesh"] = "initial" if fixed_mesh else "as shipped"
+    base = reference(fixed_mesh, False)
+    row["force_difference"] = force_difference(base[0], solution[0])
+    row["displacement_difference"] = displacement_difference(base[1], solution[1])
+    difference = max(row["force_difference"], row["displacement_difference"])
+    if difference > args.tolerance:
+        # The solver tolerance times the conditioning (a B-bar body at
+        # nu = 0.4999): then the difference falls with the tolerance.
+        tight = measure(args.contact, scene, path, ranks, fixed_mesh, True)[1]
+        base = reference(fixed_mesh, True)
+        row["tight_force_difference"] = force_difference(base[0], tight[0])
+        row["tight_displacement_difference"] = displacement_difference(base[1], tight[1])
+        difference = max(row["tight_force_difference"],
+                         row["tight_displacement_difference"])
+    row["same_to_tolerance"] = int(difference <= args.tolerance)
+    return row["same_to_tolerance"]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", default=",".join(
@@ -135,11 +190,14 @@ def main():
     parser.add_argument("--tolerance", type=float, default=1e-8)
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "same-solutions.csv"))
+    parser.add_argument("--replace-rows", action="store_true",
+                        help="keep the rows of --csv for the scenes not run "
+                             "and replace those of the scenes run")
     parser.add_argument("--contact", default=os.path.join(ROOT, "build", "contact"))
     args = parser.parse_args()
     rows, failures = [], 0
     for scene in args.scenes.split(","):
-        reference, fixed_reference = None, None
+        reference = None
         for ranks in (int(r) for r in args.ranks.split(",")):
             for path in args.paths.split(";"):
                 row, solution = measure(args.contact, scene, path, ranks)
@@ -149,45 +207,49 @@ def main():
                         failures += 1
                         break
                     reference = solution
+                    references = {(False, False): reference}
                 elif solution is not None:
-                    row["mesh"] = "as shipped"
-                    if not same_meshes(reference[1], solution[1]):
-                        # Adapted meshes differ (the parallel Kelly marking,
-                        # the multigrid's level rule): their solutions differ
-                        # by the discretization, so compare on the initial mesh.
-                        row["mesh"] = "initial"
-                        if fixed_reference is None:
-                            fixed_reference = measure(args.contact, scene, REFERENCE,
-                                                      1, True)[1]
-                        solution = measure(args.contact, scene, path, ranks, True)[1]
-                        reference_here = fixed_reference
-                    else:
-                        reference_here = reference
-                    row["force_difference"] = force_difference(reference_here[0], solution[0])
-                    row["displacement_difference"] = displacement_difference(
-                        reference_here[1], solution[1])
-                    row["same_to_tolerance"] = int(
-                        max(row["force_difference"], row["displacement_difference"])
-                        <= args.tolerance)
-                    failures += 1 - row["same_to_tolerance"]
+                    failures += 1 - compare(args, scene, path, ranks, solution,
+                                            references, row)
                 rows.append(row)
                 differences = (
                     f", forces {row['force_difference']:.1e}, displacements "
                     f"{row['displacement_difference']:.1e} of the reference"
                     f"{' on the initial mesh' if row['mesh'] == 'initial' else ''}"
+                    + (f"; with Tolerance = {TIGHT_TOLERANCE:g} forces "
+                       f"{row['tight_force_difference']:.1e}, displacements "
+                       f"{row['tight_displacement_difference']:.1e}"
+                       if "tight_force_difference" in row else "")
                     if "force_difference" in row else "")
                 print(f"{row['scene']}, {ranks} rank(s), {path}: d = {row['d']}, "
                       f"{row['increments']} increments{differences}"
                       f"{', refused: ' + row['refused'] if row['refused'] else ''}",
                       flush=True)
+            if reference is None:
+                break
     for row in rows:
-        for key in ("force_difference", "displacement_difference"):
+        for key in ("force_difference", "displacement_difference",
+                    "tight_force_difference", "tight_displacement_difference"):
             if isinstance(row.get(key), float):
                 row[key] = f"{row[key]:.1e}"
+    if args.replace_rows and os.path.exists(args.csv):
+        # The rows of the scenes run replace theirs, in place.
+        with open(args.csv, newline="") as f:
+            kept = list(csv.DictReader(f))
+        ran = {row["scene"] for row in rows}
+        fresh = {scene: [row for row in rows if row["scene"] == scene] for scene in ran}
+        merged = []
+        for row in kept:
+            if row["scene"] not in ran:
+                merged.append(row)
+            elif row["scene"] in fresh:
+                merged += fresh.pop(row["scene"])
+        rows = merged + [row for scene in fresh.values() for row in scene]
     with open(args.csv, "w", newline="") as f:
         writer = csv.DictWriter(f, COLUMNS)
         writer.writeheader()
-        writer.writerows(rows)
+        writer.writerows({column: row.get(column, "") for column in COLUMNS}
+                         for row in rows)
     write_tables()
     return 1 if failures else 0
 

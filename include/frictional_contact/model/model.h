@@ -142,16 +142,19 @@ namespace FrictionalContact
     choose_matrix_free_for_memory(ParameterHandler &prm);
 
     // Made one after the other in the constructor: each needs the ones
-    // before it (the boundary names need the coarse mesh).
+    // before it (the boundary names need the coarse mesh), except that the
+    // contact operator comes before the body (the choice of the solver
+    // path asks whether there are contact pairs); declared after the body,
+    // so that it is destroyed first.
     std::unique_ptr<Geometry::Interface<dim>>                  geometry;
     std::unique_ptr<MeshRefinement<dim>>                       refinement;
     std::unique_ptr<parallel::distributed::Triangulation<dim>> triangulation;
-    BoundaryNames                                boundary_names;
-    std::map<std::string, types::material_id>    bodies;
-    std::unique_ptr<Materials<dim>>              materials;
-    std::unique_ptr<BoundaryConditions<dim>>     boundary_conditions;
-    std::unique_ptr<ElasticBody<dim>>            body;
-    std::unique_ptr<ContactOperator<dim>>        contact;
+    BoundaryNames                                              boundary_names;
+    std::map<std::string, types::material_id>                  bodies;
+    std::unique_ptr<Materials<dim>>                            materials;
+    std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
+    std::unique_ptr<ElasticBody<dim>>        body;
+    std::unique_ptr<ContactOperator<dim>>    contact;
     /// What <Linear solver/Preconditioner> = auto chose for the memory, if
     /// it chose (choose_matrix_free_for_memory()).
     std::string automatic_choice;
