@@ -167,7 +167,7 @@ def multigrid(root):
     body = []
     for r in rows(root, "multigrid.csv"):
         if r["converged"] != "1":
-            body.append([r["n_y"], r["ranks"], r["path"], thousands(r["d"]), "failed"]
+            body.append([r["n_y"], r["ranks"], r["path"], thousands(r["d"]) if r["d"] else "", "failed"]
                         + [""] * 6)
             continue
         levels = f"{r['levels']} ({thousands(r['coarse_unknowns'])})" if r["levels"] else ""

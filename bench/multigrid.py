@@ -66,7 +66,11 @@ def measure(contact, n_y, ranks, path):
     with tempfile.TemporaryDirectory() as folder:
         code_c, output, _ = run(with_path(scene(2, n_y, 0.3, "semismooth Newton"), path),
                                 ranks, folder, contact)
-    d = int(re.search(r"d = (\d+) free", output).group(1))
+    size = re.search(r"d = (\d+) free", output)
+    if not size:
+        # Stopped before the mesh was made (the memory check's error).
+        return dict(n_y=n_y, ranks=ranks, path=path, d="", converged=0)
+    d = int(size.group(1))
     levels = re.search(r"Geometric multigrid: (\d+) levels, (\d+) unknowns", output)
     cg = re.search(r"elastic solve, (\d+) CG iterations", elastic)
     newton = re.search(r"Increment 1/1, t = 1: (\d+) Newton iterations, (\d+) Krylov", output)
@@ -111,6 +115,10 @@ def main():
                 row = measure(args.contact, n_y, args.ranks, path)
                 writer.writerow(row)
                 f.flush()
+                if not row["d"]:
+                    print(f"N_Y = {n_y}, {args.ranks} rank(s), {path}: stopped "
+                          "before the mesh was made", flush=True)
+                    continue
                 print(f"N_Y = {n_y}, {args.ranks} rank(s), {path}: d = {row['d']}, "
                       f"elastic solve {row['elastic_solve_s']} s "
                       f"({row['elastic_cg_iterations']} CG iterations), contact solve "
