@@ -13,7 +13,9 @@ namespace FrictionalContact
    * local ones near a centre (hanging nodes between the levels). Owns the
    * initial-refinement entries of "Mesh refinement" (AdaptiveRefinement
    * owns the adaptive ones) and the memory check that refuses a
-   * mesh this machine cannot hold before it is made.
+   * mesh this machine cannot hold before it is made, with the measured
+   * memory per cell of each solver path that Model's automatic choice of
+   * the path shares.
    */
   template <int dim>
   class MeshRefinement
