@@ -417,6 +417,12 @@ foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
       ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_reference}/output-${_scene}/statistics 1e-8)
   endforeach()
 endforeach()
+# Preconditioner = auto under a memory budget that only K matrix-free
+# meets: the multigrid's path, ML's forces.
+contact_compare_statistics(example2_ny4_memory_budget.same_forces
+  "example2_ny4_memory_budget.mpirun=2;example2_ny4.mpirun=2"
+  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4_memory_budget.mpirun=2/output-example2_ny4_memory_budget/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4.mpirun=2/output-example2_ny4/statistics 1e-8)
 # B-bar bodies: the mixed solves with the V-cycle of the split's A
 # (FGMRES): Newton with friction, Kanno's method (against the Newton run
 # with ML), one elastic solve.

@@ -6,10 +6,41 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <vector>
 
 namespace FrictionalContact
 {
+  namespace
+  {
+    /// <Mesh refinement/Memory budget> in GB; 0 for auto.
+    double
+    parse_memory_budget(const std::string &text)
+    {
+      if (Input::trim(text) == "auto")
+        return 0;
+      std::size_t end = 0;
+      double      gigabytes = 0;
+      try
+        {
+          gigabytes = std::stod(text, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      if (end == 0 || Input::trim(text.substr(end)) != "" ||
+          !(gigabytes > 0) || !std::isfinite(gigabytes))
+        Input::fail("Mesh refinement/Memory budget",
+                    text,
+                    "auto or a number of GB > 0");
+      return gigabytes;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
@@ -32,6 +63,19 @@ namespace FrictionalContact
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
                       "Centre of the region of local refinement (length).");
+    prm.declare_entry("Memory budget",
+                      "auto",
+                      Patterns::Anything(),
+                      "The memory a run plans with, before it makes its "
+                      "mesh: auto: 80 % of the memory the machines of the "
+                      "run report available (MemAvailable, summed over "
+                      "them); or a number of GB, for example a batch job's "
+                      "memory limit, which MemAvailable does not show. A "
+                      "mesh that would need more stops the run with a "
+                      "line that says so; with Linear solver/Preconditioner "
+                      "= auto, a 3D mesh that fits only without the "
+                      "assembled K takes the geometric multigrid with K "
+                      "matrix-free.");
     prm.declare_entry("Refinement radius",
                       "0",
                       Patterns::Double(0.),
@@ -48,6 +92,7 @@ namespace FrictionalContact
     , local_center(Input::parse_vector<dim>("Mesh refinement/Refinement center",
                                             prm.get("Refinement center")))
     , local_radius(prm.get_double("Refinement radius"))
+    , memory_budget_gb(parse_memory_budget(prm.get("Memory budget")))
   {
     if (local_refinements > 0 && !(local_radius > 0))
       Input::fail("Mesh refinement/Refinement radius",
@@ -88,8 +133,17 @@ namespace FrictionalContact
   double
   MeshRefinement<dim>::available_memory(const MPI_Comm comm)
   {
+    // One rank per machine reads it; the run has the sum.
+    MPI_Comm machine;
+    MPI_Comm_split_type(comm,
+                        MPI_COMM_TYPE_SHARED,
+                        Utilities::MPI::this_mpi_process(comm),
+                        MPI_INFO_NULL,
+                        &machine);
+    const bool reads = Utilities::MPI::this_mpi_process(machine) == 0;
+    MPI_Comm_free(&machine);
     double available = 0;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    if (reads)
       {
         std::ifstream meminfo("/proc/meminfo");
         std::string   key;
@@ -100,7 +154,42 @@ namespace FrictionalContact
           else
             meminfo.ignore(1000, '\n');
       }
-    return Utilities::MPI::broadcast(comm, available, 0);
+    return Utilities::MPI::sum(available, comm);
+  }
+
+
+
+  template <int dim>
+  double
+  MeshRefinement<dim>::memory_budget(const MPI_Comm comm) const
+  {
+    return memory_budget_gb > 0 ? 1e9 * memory_budget_gb :
+                                  largest_share * available_memory(comm);
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshRefinement<dim>::describe_budget(const double budget) const
+  {
+    return memory_budget_gb > 0 ?
+             "the " + describe_bytes(budget) +
+               " of <Mesh refinement/Memory budget>" :
+             Input::to_text(100 * largest_share) + " % of the " +
+               describe_bytes(budget / largest_share) + " available";
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshRefinement<dim>::describe_bytes(const double bytes)
+  {
+    std::ostringstream text;
+    text << std::setprecision(2) << (bytes >= 1e9 ? bytes / 1e9 : bytes / 1e6)
+         << (bytes >= 1e9 ? " GB" : " MB");
+    return text.str();
   }
 
 
@@ -108,9 +197,8 @@ namespace FrictionalContact
   template <int dim>
   bool
   MeshRefinement<dim>::fits_only_matrix_free(const double n_cells,
-                                             const double available)
+                                             const double budget)
   {
-    const double budget = largest_share * available;
     return budget > 0 && bytes_needed(n_cells, false) > budget &&
            bytes_needed(n_cells, true) <= budget;
   }
@@ -133,26 +221,24 @@ namespace FrictionalContact
   void
   MeshRefinement<dim>::check_memory(const double n_cells, const MPI_Comm comm) const
   {
-    const double available = available_memory(comm);
-    const double needed    = bytes_needed(n_cells, matrix_free_stiffness);
-    if (available > 0 && needed > largest_share * available)
+    const double budget = memory_budget(comm);
+    const double needed = bytes_needed(n_cells, matrix_free_stiffness);
+    if (budget > 0 && needed > budget)
       {
         // In 3D the path without K may still fit.
         const bool matrix_free_fits =
-          !matrix_free_stiffness && fits_only_matrix_free(n_cells, available);
+          !matrix_free_stiffness && fits_only_matrix_free(n_cells, budget);
         throw InputError(
           "<Geometry>: the mesh would have " + Input::to_text(n_cells) +
-          " cells and need about " + Input::to_text(needed / 1e9) +
-          " GB, more than " + Input::to_text(100 * largest_share) + " % of the " +
-          Input::to_text(available / 1e9) +
-          " GB available; use fewer cells (repetitions, <Mesh "
+          " cells and need about " + describe_bytes(needed) + ", more than " +
+          describe_budget(budget) +
+          "; use fewer cells (repetitions, <Mesh "
           "refinement/Global refinements>, <Local refinements>)" +
           (matrix_free_fits ?
              std::string(", or set <Linear solver/Preconditioner> = geometric "
                          "multigrid and <Linear solver/Matrix-free stiffness> = "
                          "true (about " +
-                         Input::to_text(bytes_needed(n_cells, true) / 1e9) +
-                         " GB)") :
+                         describe_bytes(bytes_needed(n_cells, true)) + ")") :
              std::string()));
       }
   }

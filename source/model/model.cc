@@ -4,7 +4,6 @@
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/model.h>
 
-#include <cmath>
 #include <ostream>
 #include <set>
 
@@ -156,26 +155,24 @@ namespace FrictionalContact
       return false;
     const double n_cells = refinement->cells_after_global_refinement(
       *triangulation, geometry->n_built_in_refinements());
-    const double available =
-      MeshRefinement<dim>::available_memory(get_mpi_communicator());
-    if (!MeshRefinement<dim>::fits_only_matrix_free(n_cells, available))
+    const double budget = refinement->memory_budget(get_mpi_communicator());
+    if (!MeshRefinement<dim>::fits_only_matrix_free(n_cells, budget))
       return false;
     prm.enter_subsection("Linear solver");
     prm.set("Preconditioner", "geometric multigrid");
     prm.set("Matrix-free stiffness", "true");
     prm.leave_subsection();
-    const auto gigabytes = [](const double bytes) {
-      return Input::to_text(std::round(bytes / 1e8) / 10) + " GB";
-    };
     automatic_choice =
       "Linear solver: auto takes the geometric multigrid with K matrix-free: "
       "the mesh of " + std::to_string(static_cast<long long>(n_cells)) +
       " cells needs about " +
-      gigabytes(MeshRefinement<dim>::bytes_needed(n_cells, false)) +
+      MeshRefinement<dim>::describe_bytes(
+        MeshRefinement<dim>::bytes_needed(n_cells, false)) +
       " with K assembled and ML, more than " +
-      Input::to_text(100 * MeshRefinement<dim>::largest_share) + " % of the " +
-      gigabytes(available) + " available, and " +
-      gigabytes(MeshRefinement<dim>::bytes_needed(n_cells, true)) + " without K";
+      refinement->describe_budget(budget) + ", and " +
+      MeshRefinement<dim>::describe_bytes(
+        MeshRefinement<dim>::bytes_needed(n_cells, true)) +
+      " without K";
     return true;
   }
 

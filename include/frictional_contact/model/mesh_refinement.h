@@ -68,15 +68,31 @@ namespace FrictionalContact
     static double
     bytes_needed(const double n_cells, const bool matrix_free);
 
-    /// The memory this machine has available (MemAvailable, read on rank 0
-    /// and the same on every rank), in bytes; 0 where it is not known.
+    /// The memory the machines of the run have available (MemAvailable,
+    /// read by one rank per machine and summed), in bytes, the same on
+    /// every rank; 0 where it is not known.
     static double
     available_memory(const MPI_Comm comm);
 
-    /// Whether a mesh of @p n_cells cells fits in largest_share of
-    /// @p available bytes with K matrix-free, but not with K assembled.
+    /// The bytes the run plans with: <Memory budget>, or largest_share of
+    /// the available memory (0 where it is not known: no check).
+    double
+    memory_budget(const MPI_Comm comm) const;
+
+    /// Where a @p budget of memory_budget() comes from, for a message: "the
+    /// 2 GB of <Mesh refinement/Memory budget>" or "80 % of the 24 GB
+    /// available".
+    std::string
+    describe_budget(const double budget) const;
+
+    /// @p bytes in MB or GB, with two digits.
+    static std::string
+    describe_bytes(const double bytes);
+
+    /// Whether a mesh of @p n_cells cells fits in @p budget bytes with K
+    /// matrix-free, but not with K assembled.
     static bool
-    fits_only_matrix_free(const double n_cells, const double available);
+    fits_only_matrix_free(const double n_cells, const double budget);
 
     /// The cells of @p coarse_mesh after its @p built_in_refinements and the
     /// Global refinements (Local refinements add to them).
@@ -117,5 +133,7 @@ namespace FrictionalContact
     unsigned int local_refinements;
     Point<dim>   local_center;
     double       local_radius;
+    /// <Memory budget> in GB; 0: auto.
+    double memory_budget_gb;
   };
 } // namespace FrictionalContact
