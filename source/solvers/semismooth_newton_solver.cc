@@ -179,6 +179,7 @@ namespace FrictionalContact
         linear_solver.volumetric_split(),
         linear_solver.preconditioner_varies(),
         any_slip,
+        K.is_assembled() ? 30 : 12,
         linear_solver.maximum_iterations(),
         std::max(reduction * rhs.l2_norm(), floor), rhs, w);
       linear_solver.krylov_seconds += timer.wall_time();

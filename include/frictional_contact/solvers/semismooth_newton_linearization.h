@@ -358,11 +358,17 @@ namespace FrictionalContact
      * of A (volumetric_split.h), the preconditioner then being that of the
      * split's reduced stiffness. GMRES is flexible for a
      * @p variable_preconditioner (the geometric multigrid's V-cycle), and
-     * restarted after 12 iterations: FGMRES keeps two vectors per
-     * iteration, and on example II at d = 1.6M (2 ranks) a restart after
-     * 25 took 22 Newton steps, 197 Krylov iterations, 82 s and a peak of
-     * 1,384 MB per rank, after 12 19, 189, 81 s and 1,130 MB (GMRES(50)
-     * with the cycle: 33, 365, 162 s).
+     * restarted after @p flexible_restart iterations. FGMRES keeps two
+     * vectors per iteration: with K matrix-free, the path for memory, 12,
+     * since on example II at d = 1.6M (2 ranks) a restart after 25 took 22
+     * Newton steps, 197 Krylov iterations, 82 s and a peak of 1,384 MB per
+     * rank, after 12 19, 189, 81 s and 1,130 MB (GMRES(50) with the cycle:
+     * 33, 365, 162 s); with K assembled, 30, where the vectors are a small
+     * part of the memory: example II on one rank, Krylov iterations and
+     * contact solve, restart 12 against 30: N_Y = 16 93 / 1.12 s against
+     * 85 / 1.01 s, N_Y = 24 96 / 3.94 s against 89 / 3.60 s, N_Y = 28 145
+     * / 9.6 s against 123 / 8.2 s (peak 465 against 478 MB), and on 2
+     * ranks 120 / 4.28 s against 113 / 4.00 s (by hand; 50 as 30).
      * Returns the Krylov iterations; throws SolverControl::NoConvergence.
      */
     template <int dim, typename Preconditioner>
@@ -372,6 +378,7 @@ namespace FrictionalContact
                         const VolumetricSplit       *volumetric,
                         const bool                   variable_preconditioner,
                         const bool                   non_symmetric,
+                        const unsigned int           flexible_restart,
                         const unsigned int           max_iterations,
                         const double                 goal,
                         const Vector                &rhs,
@@ -404,7 +411,8 @@ namespace FrictionalContact
         {
           if (variable_preconditioner)
             SolverFGMRES<Vector>(control,
-                                 typename SolverFGMRES<Vector>::AdditionalData(12))
+                                 typename SolverFGMRES<Vector>::AdditionalData(
+                                   flexible_restart))
               .solve(A, w, rhs, preconditioner);
           else
             SolverGMRES<Vector>(control,
