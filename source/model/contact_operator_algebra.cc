@@ -1,0 +1,252 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <frictional_contact/model/contact_operator.h>
+
+namespace FrictionalContact
+{
+  // The nodal algebra of ContactOperator: the local frames of the
+  // candidates, T and the forces of both sides of a pair, the normal
+  // stiffness and nodal blocks the Newton method asks for, and the largest
+  // singular value of T (the class's other members: contact_operator.cc).
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_local(const unsigned int j, Tensor<1, dim> v) const
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        v[c] = 0;
+    Tensor<1, dim> local;
+    local[0] = nodes[j].into_obstacle * v;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        local[k + 1] = tangents[j][k] * v;
+    return local;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::to_cartesian(const unsigned int    j,
+                                     const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> x = v[0] * nodes[j].into_obstacle;
+    if (!tangents.empty())
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        x += v[k + 1] * tangents[j][k];
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        x[c] = 0;
+    return x;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::set_nodal_values(
+    const std::vector<Tensor<1, dim>> &values,
+    Vector                            &f) const
+  {
+    f = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      add_nodal_value(j, values[j], f);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::apply(const std::vector<Tensor<1, dim>> &r,
+                              Vector                            &f) const
+  {
+    f = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      add_nodal_value(j, to_cartesian(j, r[j]), f);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::forces_on_both_sides(const std::vector<Tensor<1, dim>> &r,
+                                             const IndexSet &relevant,
+                                             Vector         &f) const
+  {
+    apply(r, f);
+    if (!has_pairs())
+      return;
+    // Master nodes may be another rank's, and the same dof may get several
+    // slave nodes' parts: added into a writable vector, then summed.
+    Vector master;
+    master.reinit(f.locally_owned_elements(), relevant, mpi_communicator, true);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].pair >= 0)
+        if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
+          {
+            const Tensor<1, dim> force = to_cartesian(j, r[j]);
+            for (const auto &[dofs, p] : data->masters)
+              for (unsigned int c = 0; c < dim; ++c)
+                interfaces[nodes[j].pair].resolve_master_dof(
+                  dofs[c], [&](const types::global_dof_index dof, const double w) {
+                    master[dof] -= p * w * force[c];
+                  });
+          }
+    master.compress(VectorOperation::add);
+    f += master;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactOperator<dim>::normal_stiffness(const StiffnessOperator &K) const
+  {
+    std::vector<std::vector<types::global_dof_index>> node_dofs;
+    for (const auto &node : nodes)
+      node_dofs.emplace_back(node.dofs.begin(), node.dofs.end());
+    const std::vector<FullMatrix<double>> blocks = K.blocks(node_dofs);
+    std::vector<double> c(nodes.size(), 0.);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        Tensor<1, dim> normal;
+        normal[0]                = 1;
+        const Tensor<1, dim> t_n = to_cartesian(j, normal);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            c[j] += t_n[a] * blocks[j](a, b) * t_n[b];
+      }
+    return c;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactOperator<dim>::nodal_block(const unsigned int    j,
+                                    const Tensor<2, dim> &B,
+                                    NodalBlock           &block) const
+  {
+    Tensor<2, dim> frame; // columns: the local directions, Cartesian
+    for (unsigned int a = 0; a < dim; ++a)
+      {
+        Tensor<1, dim> e;
+        e[a]                          = 1;
+        const Tensor<1, dim> column   = to_cartesian(j, e);
+        for (unsigned int c = 0; c < dim; ++c)
+          frame[c][a] = column[c];
+      }
+    const Tensor<2, dim> cartesian = frame * B * transpose(frame);
+    block.dofs.assign(nodes[j].dofs.begin(), nodes[j].dofs.end());
+    block.values.resize(dim * dim);
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = 0; b < dim; ++b)
+        block.values[a * dim + b] = cartesian[a][b];
+    return true;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::largest_singular_value() const
+  {
+    // Candidates sit on distinct nodes, so T^T T is block diagonal with the
+    // blocks T_j^T T_j, and sigma_T^2 is the largest of their eigenvalues.
+    double largest = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        SymmetricTensor<2, dim> gram;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            Tensor<1, dim> e;
+            e[a]                           = 1;
+            const Tensor<1, dim> column_a  = to_cartesian(j, e);
+            for (unsigned int b = 0; b <= a; ++b)
+              {
+                Tensor<1, dim> f;
+                f[b]       = 1;
+                gram[a][b] = column_a * to_cartesian(j, f);
+              }
+          }
+        largest = std::max(largest, eigenvalues(gram)[0]);
+      }
+    return std::sqrt(Utilities::MPI::max(largest, mpi_communicator));
+  }
+
+
+
+  template <int dim>
+  double
+  ContactOperator<dim>::orthonormality_defect() const
+  {
+    const unsigned int n_columns = has_friction() ? dim : 1;
+    double             defect    = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      for (unsigned int a = 0; a < n_columns; ++a)
+        for (unsigned int b = 0; b < n_columns; ++b)
+          {
+            Tensor<1, dim> e, f;
+            e[a] = 1;
+            f[b] = 1;
+            defect = std::max(defect,
+                              std::abs(to_cartesian(j, e) * to_cartesian(j, f) -
+                                       (a == b ? 1. : 0.)));
+          }
+    return Utilities::MPI::max(defect, mpi_communicator);
+  }
+
+
+
+  // Each member apart: contact_operator.cc instantiates the class, and a
+  // unity build may put both files in one translation unit.
+  template Tensor<1, 2>
+  ContactOperator<2>::to_local(const unsigned int, Tensor<1, 2>) const;
+  template Tensor<1, 3>
+  ContactOperator<3>::to_local(const unsigned int, Tensor<1, 3>) const;
+  template Tensor<1, 2>
+  ContactOperator<2>::to_cartesian(const unsigned int, const Tensor<1, 2> &) const;
+  template Tensor<1, 3>
+  ContactOperator<3>::to_cartesian(const unsigned int, const Tensor<1, 3> &) const;
+  template void
+  ContactOperator<2>::set_nodal_values(const std::vector<Tensor<1, 2>> &,
+                                       Vector &) const;
+  template void
+  ContactOperator<3>::set_nodal_values(const std::vector<Tensor<1, 3>> &,
+                                       Vector &) const;
+  template void
+  ContactOperator<2>::apply(const std::vector<Tensor<1, 2>> &, Vector &) const;
+  template void
+  ContactOperator<3>::apply(const std::vector<Tensor<1, 3>> &, Vector &) const;
+  template void
+  ContactOperator<2>::forces_on_both_sides(const std::vector<Tensor<1, 2>> &,
+                                           const IndexSet &,
+                                           Vector &) const;
+  template void
+  ContactOperator<3>::forces_on_both_sides(const std::vector<Tensor<1, 3>> &,
+                                           const IndexSet &,
+                                           Vector &) const;
+  template std::vector<double>
+  ContactOperator<2>::normal_stiffness(const StiffnessOperator &) const;
+  template std::vector<double>
+  ContactOperator<3>::normal_stiffness(const StiffnessOperator &) const;
+  template bool
+  ContactOperator<2>::nodal_block(const unsigned int,
+                                  const Tensor<2, 2> &,
+                                  NodalBlock &) const;
+  template bool
+  ContactOperator<3>::nodal_block(const unsigned int,
+                                  const Tensor<2, 3> &,
+                                  NodalBlock &) const;
+  template double
+  ContactOperator<2>::largest_singular_value() const;
+  template double
+  ContactOperator<3>::largest_singular_value() const;
+  template double
+  ContactOperator<2>::orthonormality_defect() const;
+  template double
+  ContactOperator<3>::orthonormality_defect() const;
+} // namespace FrictionalContact
