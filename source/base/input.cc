@@ -130,6 +130,28 @@ namespace FrictionalContact
 
 
 
+    double
+    parse_number(const std::string &entry,
+                 const std::string &text,
+                 const std::string &allowed)
+    {
+      std::size_t end   = 0;
+      double      value = 0;
+      try
+        {
+          value = std::stod(text, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      if (end == 0 || end != text.size() || !std::isfinite(value))
+        fail(entry, text, allowed);
+      return value;
+    }
+
+
+
     template Tensor<1, 1>
     parse_vector<1>(const std::string &, const std::string &);
     template Tensor<1, 2>

@@ -65,25 +65,6 @@ namespace FrictionalContact
         }
       Input::fail("Material/" + entry, text, "a value for the body '" + body + "'");
     }
-
-    /// The number in @p text, or an error naming the entry.
-    double
-    number(const std::string &entry, const std::string &text)
-    {
-      std::size_t end = 0;
-      double      value;
-      try
-        {
-          value = std::stod(text, &end);
-        }
-      catch (const std::exception &)
-        {
-          end = 0;
-        }
-      if (end == 0 || end != text.size() || !std::isfinite(value))
-        Input::fail("Material/" + entry, text, "a number is expected");
-      return value;
-    }
   } // namespace
 
 
@@ -98,8 +79,10 @@ namespace FrictionalContact
     const std::string model   = value_for(prm, "Two-dimensional model", body);
     const std::string formulation = value_for(prm, "Formulation", body);
     prm.leave_subsection();
-    youngs_modulus = number("Young's modulus", young);
-    poissons_ratio = number("Poisson's ratio", poisson);
+    youngs_modulus =
+      Input::parse_number("Material/Young's modulus", young, "a number is expected");
+    poissons_ratio =
+      Input::parse_number("Material/Poisson's ratio", poisson, "a number is expected");
     if (model != "plane strain" && model != "plane stress")
       Input::fail("Material/Two-dimensional model", model,
                   "'plane strain' or 'plane stress' is expected");

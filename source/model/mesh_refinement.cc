@@ -20,21 +20,11 @@ namespace FrictionalContact
     {
       if (Input::trim(text) == "auto")
         return 0;
-      std::size_t end = 0;
-      double      gigabytes = 0;
-      try
-        {
-          gigabytes = std::stod(text, &end);
-        }
-      catch (const std::exception &)
-        {
-          end = 0;
-        }
-      if (end == 0 || Input::trim(text.substr(end)) != "" ||
-          !(gigabytes > 0) || !std::isfinite(gigabytes))
-        Input::fail("Mesh refinement/Memory budget",
-                    text,
-                    "auto or a number of GB > 0");
+      const std::string allowed = "auto or a number of GB > 0";
+      const double      gigabytes =
+        Input::parse_number("Mesh refinement/Memory budget", text, allowed);
+      if (!(gigabytes > 0))
+        Input::fail("Mesh refinement/Memory budget", text, allowed);
       return gigabytes;
     }
   } // namespace

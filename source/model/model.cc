@@ -93,8 +93,8 @@ namespace FrictionalContact
     refinement = std::make_unique<MeshRefinement<dim>>(prm);
     prm.leave_subsection();
 
+    bodies = geometry->body_names();
     make_coarse_mesh(prm, comm);
-    bodies         = geometry->body_names();
     boundary_names = BoundaryNames(geometry->boundary_names(),
                                    boundary_ids_in(*triangulation));
     materials      = std::make_unique<Materials<dim>>(prm, bodies);
@@ -134,10 +134,9 @@ namespace FrictionalContact
       levels ? parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy :
                    parallel::distributed::Triangulation<dim>::default_setting);
     geometry->create_coarse_mesh(*triangulation);
-    const auto names = geometry->body_names();
-    if (names.size() == 1)
+    if (bodies.size() == 1)
       for (const auto &cell : triangulation->cell_iterators_on_level(0))
-        cell->set_material_id(names.begin()->second);
+        cell->set_material_id(bodies.begin()->second);
   }
 
 

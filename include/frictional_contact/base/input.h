@@ -81,6 +81,13 @@ namespace FrictionalContact
     Tensor<1, dim>
     parse_vector(const std::string &entry, const std::string &text);
 
+    /// The finite number that is the whole of @p text; else fail(@p entry,
+    /// @p text, @p allowed).
+    double
+    parse_number(const std::string &entry,
+                 const std::string &text,
+                 const std::string &allowed);
+
     /// @p text as one line: white space folded, bytes that are not
     /// printable ASCII shown as '?', at most @p max_length characters.
     std::string

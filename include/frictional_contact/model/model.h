@@ -125,7 +125,7 @@ namespace FrictionalContact
 
     /// The triangulation (with the levels of the multigrid if
     /// <Linear solver/Preconditioner> asks for it) and the geometry's coarse
-    /// mesh in it.
+    /// mesh in it, its cells of the one body if there is one body.
     void
     make_coarse_mesh(ParameterHandler &prm, const MPI_Comm comm);
 
@@ -143,9 +143,10 @@ namespace FrictionalContact
 
     // Made one after the other in the constructor: each needs the ones
     // before it (the boundary names need the coarse mesh), except that the
-    // contact operator comes before the body (the choice of the solver
-    // path asks whether there are contact pairs); declared after the body,
-    // so that it is destroyed first.
+    // bodies come before the coarse mesh (its cells take their material
+    // id) and the contact operator before the body (the choice of the
+    // solver path asks whether there are contact pairs; declared after
+    // the body, so that it is destroyed first).
     std::unique_ptr<Geometry::Interface<dim>>                  geometry;
     std::unique_ptr<MeshRefinement<dim>>                       refinement;
     std::unique_ptr<parallel::distributed::Triangulation<dim>> triangulation;
