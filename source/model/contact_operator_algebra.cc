@@ -73,16 +73,16 @@ namespace FrictionalContact
   template <int dim>
   void
   ContactOperator<dim>::forces_on_both_sides(const std::vector<Tensor<1, dim>> &r,
-                                             const IndexSet &relevant,
-                                             Vector         &f) const
+                                             Vector &f) const
   {
     apply(r, f);
     if (!has_pairs())
       return;
-    // Master nodes may be another rank's, and the same dof may get several
-    // slave nodes' parts: added into a writable vector, then summed.
-    Vector master;
-    master.reinit(f.locally_owned_elements(), relevant, mpi_communicator, true);
+    // The master nodes of this rank's slave nodes may lie beyond its ghost
+    // layer, and the same dof may get several slave nodes' parts: the parts
+    // are summed here, written into a vector whose non-local entries are
+    // exactly the dofs written, and added over the ranks.
+    std::map<types::global_dof_index, double> parts;
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair >= 0)
         if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
@@ -92,9 +92,17 @@ namespace FrictionalContact
               for (unsigned int c = 0; c < dim; ++c)
                 interfaces[nodes[j].pair].resolve_master_dof(
                   dofs[c], [&](const types::global_dof_index dof, const double w) {
-                    master[dof] -= p * w * force[c];
+                    parts[dof] -= p * w * force[c];
                   });
           }
+    IndexSet written(f.size());
+    for (const auto &[dof, part] : parts)
+      written.add_index(dof);
+    written.compress();
+    Vector master;
+    master.reinit(f.locally_owned_elements(), written, mpi_communicator, true);
+    for (const auto &[dof, part] : parts)
+      master[dof] += part;
     master.compress(VectorOperation::add);
     f += master;
   }
@@ -223,11 +231,9 @@ namespace FrictionalContact
   ContactOperator<3>::apply(const std::vector<Tensor<1, 3>> &, Vector &) const;
   template void
   ContactOperator<2>::forces_on_both_sides(const std::vector<Tensor<1, 2>> &,
-                                           const IndexSet &,
                                            Vector &) const;
   template void
   ContactOperator<3>::forces_on_both_sides(const std::vector<Tensor<1, 3>> &,
-                                           const IndexSet &,
                                            Vector &) const;
   template std::vector<double>
   ContactOperator<2>::normal_stiffness(const StiffnessOperator &) const;

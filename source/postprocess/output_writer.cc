@@ -241,10 +241,9 @@ namespace FrictionalContact
     // pair (the master's are those the slave side transfers).
     Vector force = body.make_vector(), force_ghosted = body.make_ghosted_vector();
     Vector increment_force_ghosted = body.make_ghosted_vector();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
-    contact.forces_on_both_sides(results.reaction, relevant, force);
+    contact.forces_on_both_sides(results.reaction, force);
     force_ghosted = force;
-    contact.forces_on_both_sides(results.reaction_increment, relevant, force);
+    contact.forces_on_both_sides(results.reaction_increment, force);
     increment_force_ghosted = force;
 
     // Gap and state at the vertices: the solver's linearised gap at the

@@ -241,9 +241,7 @@ namespace FrictionalContact
      * vector; collective.
      */
     void
-    forces_on_both_sides(const std::vector<Tensor<1, dim>> &r,
-                         const IndexSet                    &relevant,
-                         Vector                            &f) const;
+    forces_on_both_sides(const std::vector<Tensor<1, dim>> &r, Vector &f) const;
 
     /// f += T_j r_j.
     void
