@@ -207,7 +207,8 @@ foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
               cattaneo_3d_nu_04999:cattaneo
               "hertz_two_bodies_2d:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               "hertz_two_bodies_3d.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
-              sliding_on_elastic_base:sliding sliding_pair_friction:sliding)
+              sliding_on_elastic_base:sliding sliding_pair_friction:sliding
+              "hertz_3d_force.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02")
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
   list(GET _case 1 _problem)
@@ -353,7 +354,12 @@ foreach(_case
     "patch_test_two_bodies_2d_swapped:1e-10:ux=0.39*0.01/(0.91*2)*x:uy=-0.005*y:0.01/(0.91*2)"
     "patch_test_two_bodies_2d_friction:1e-8:ux=0.39*0.01/(0.91*2)*x:uy=-0.005*y:0.01/(0.91*2)"
     "patch_test_two_bodies_3d.mpirun=2:1e-10:ux=0.0015*x:uy=0.0015*y:uz=-0.005*z:0.005"
-    "patch_test_two_bodies_3d.mpirun=3:1e-10:ux=0.0015*x:uy=0.0015*y:uz=-0.005*z:0.005")
+    "patch_test_two_bodies_3d.mpirun=3:1e-10:ux=0.0015*x:uy=0.0015*y:uz=-0.005*z:0.005"
+    "patch_test_pressure_2d:1e-10:ux=0.195*x:uy=-0.455*y:0.5"
+    "patch_test_pressure_2d_friction.mpirun=3:1e-8:ux=0.195*x:uy=-0.455*y:0.5"
+    "patch_test_split_2d:1e-8:ux=0.195*x:uy=-0.455*y:0.5"
+    "patch_test_pressure_3d_frictionless:1e-10:ux=0.15*x:uy=0.15*y:uz=-0.5*z:0.5"
+    "patch_test_pressure_3d.mpirun=2:1e-8:ux=0.15*x:uy=0.15*y:uz=-0.5*z:0.5")
   string(REPLACE ":" ";" _case "${_case}")
   list(GET _case 0 _test)
   list(GET _case 1 _tolerance)
@@ -447,4 +453,18 @@ foreach(_case "hertz_two_bodies_3d;.mpirun=2" "sliding_pair_friction;")
     "${_scene}_multigrid${_ranks};${_scene}${_ranks}"
     ${CMAKE_CURRENT_BINARY_DIR}/${_scene}_multigrid${_ranks}/output-${_scene}_multigrid/statistics
     ${CMAKE_CURRENT_BINARY_DIR}/${_scene}${_ranks}/output-${_scene}/statistics 1e-8)
+endforeach()
+
+# Two bodies from one Gmsh file (their physical surfaces or volumes named
+# base and block) against the same bodies from Geometry/Stacked blocks:
+# the same contact forces to 1e-10 (Newton tolerance 1e-12).
+foreach(_case "2d;;" "3d;.mpirun=2;.mpirun=2")
+  list(GET _case 0 _d)
+  list(GET _case 1 _a)
+  list(GET _case 2 _b)
+  contact_compare_statistics(two_blocks_from_file_${_d}.same_forces
+    "two_blocks_from_file_${_d}${_a};two_blocks_stacked_${_d}${_b}"
+    ${CMAKE_CURRENT_BINARY_DIR}/two_blocks_from_file_${_d}${_a}/output-two_blocks_from_file_${_d}/statistics
+    ${CMAKE_CURRENT_BINARY_DIR}/two_blocks_stacked_${_d}${_b}/output-two_blocks_stacked_${_d}/statistics
+    1e-10)
 endforeach()

@@ -51,6 +51,21 @@ namespace FrictionalContact
     if (contact.active())
       sigma_T = contact.largest_singular_value();
     contact_active = contact.active();
+    const std::set<types::material_id> &held = model.bodies_held_by_contact_alone();
+    if (!held.empty() && !solver.method->handles_contact_held_bodies())
+      throw InputError(
+        "<Contact solver/Method> = " + solver.method_name +
+        " needs K positive definite (mu_pi), but only contact holds the body '" +
+        body.body_name(*held.begin()) +
+        "' against rigid-body motion: set <Contact solver/Method> = "
+        "semismooth Newton, which solves such scenes, or hold the body with "
+        "<Boundary conditions/Fixed boundaries>");
+    if (held.size() > ContactHeldBodies::max_bodies)
+      throw InputError("only contact holds " + std::to_string(held.size()) +
+                       " bodies; at most " +
+                       std::to_string(ContactHeldBodies::max_bodies) +
+                       " are supported: hold some with <Boundary "
+                       "conditions/Fixed boundaries>");
   }
 
 
@@ -169,7 +184,46 @@ namespace FrictionalContact
         problem->gaps.push_back(contact.gap_at_start(j, start));
         problem->obstacle_slip.push_back(contact.prescribed_slip(j, obstacle_motion));
       }
+    describe_contact_held_bodies(model, problem->contact_held);
     return problem;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::describe_contact_held_bodies(
+    const Model<dim>   &model,
+    ContactHeldBodies &held) const
+  {
+    const std::set<types::material_id> &ids = model.bodies_held_by_contact_alone();
+    if (ids.empty())
+      return;
+    const ElasticBody<dim>     &body    = model.get_body();
+    const ContactOperator<dim> &contact = model.get_contact();
+    std::map<types::material_id, unsigned int> bit;
+    for (const types::material_id id : ids)
+      {
+        bit[id] = held.names.size();
+        held.names.push_back(body.body_name(id));
+      }
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      {
+        std::uint64_t bits = 0;
+        for (const types::material_id id : contact.bodies_held_by(j))
+          if (const auto it = bit.find(id); it != bit.end())
+            bits |= std::uint64_t(1) << it->second;
+        held.held_by_candidate.push_back(bits);
+      }
+    const StiffnessOperator &K         = stiffness(model);
+    const std::vector<bool>  of_bodies = body.owned_dofs_of(ids);
+    held.stabilization                 = body.make_vector();
+    const IndexSet &owned              = body.locally_owned_dofs();
+    double         *S                  = held.stabilization.begin();
+    for (unsigned int i = 0; i < of_bodies.size(); ++i)
+      if (of_bodies[i])
+        S[i] = ContactHeldBodies::stabilization_factor *
+               std::abs(K.diag_element(owned.nth_index_in_set(i)));
   }
 
 

@@ -237,6 +237,7 @@ namespace FrictionalContact
                 node.position = face->vertex(v);
                 node.area     = area[first_dof];
                 node.pair     = static_cast<std::int16_t>(pair);
+                node.body     = cell->material_id();
                 const auto [it, inserted] = found.emplace(first_dof, node);
                 if (!inserted && it->second.pair != pair)
                   throw InputError(
@@ -290,8 +291,17 @@ namespace FrictionalContact
                          "its nodes");
 
     nodes.reserve(found.size());
+    facing_contact.clear();
     for (const auto &[dof, node] : found)
-      nodes.push_back(node);
+      {
+        nodes.push_back(node);
+        facing_contact.insert(node.body);
+      }
+    for (const MortarInterface<dim> &interface : interfaces)
+      facing_contact.insert(interface.master_bodies().begin(),
+                            interface.master_bodies().end());
+    facing_contact =
+      Utilities::MPI::compute_set_union(facing_contact, body.get_mpi_communicator());
     if (has_friction())
       tangents.resize(nodes.size());
     n_global = Utilities::MPI::sum<types::global_dof_index>(

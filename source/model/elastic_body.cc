@@ -509,8 +509,8 @@ namespace FrictionalContact
 
 
   template <int dim>
-  void
-  ElasticBody<dim>::check_rigid_body_motion_is_prevented() const
+  std::set<types::material_id>
+  ElasticBody<dim>::bodies_free_to_move() const
   {
     // The fixed dofs of a body prevent its rigid motions iff the rigid-body
     // modes, restricted to them, are linearly independent: their Gram
@@ -542,6 +542,7 @@ namespace FrictionalContact
       }
     Utilities::MPI::sum(gram, mpi_communicator, gram);
 
+    std::set<types::material_id> free_to_move;
     for (const auto &[name, id] : bodies)
       {
         const unsigned int       k = body_index.at(id);
@@ -558,15 +559,28 @@ namespace FrictionalContact
         for (unsigned int a = 0; a < n_modes; ++a)
           smallest = std::min(smallest, matrix.eigenvalue(a).real());
         if (!(scale > 0) || smallest < 1e-10 * scale)
-          throw InputError(
-            "<Boundary conditions/Fixed boundaries> does not hold " +
-            (bodies.size() == 1 ? std::string("the body") :
-                                  "the body '" + name + "'") +
-            " against rigid-body motion (translation or rotation); a body "
-            "held by nothing but contact is not allowed: fix or prescribe "
-            "more boundaries or components, e.g. 'set Fixed boundaries = " +
-            (bodies.size() == 1 ? std::string("left") : name + " left") + "'");
+          free_to_move.insert(id);
       }
+    return free_to_move;
+  }
+
+
+
+  template <int dim>
+  std::vector<bool>
+  ElasticBody<dim>::owned_dofs_of(const std::set<types::material_id> &ids) const
+  {
+    std::vector<bool> in(owned_dofs.n_elements(), false);
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && ids.count(cell->material_id()) > 0)
+        {
+          cell->get_dof_indices(dof_indices);
+          for (const auto g : dof_indices)
+            if (owned_dofs.is_element(g))
+              in[owned_dofs.index_within_set(g)] = true;
+        }
+    return in;
   }
 
   template class ElasticBody<2>;

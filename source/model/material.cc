@@ -1,6 +1,7 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/material.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace FrictionalContact
@@ -46,13 +47,19 @@ namespace FrictionalContact
   namespace
   {
     /// The value of the entry @p entry of subsection Material for @p body:
-    /// the whole text, or the part after 'body:' in 'a: 1; body: 2'.
+    /// the whole text, or the part after 'body:' in 'a: 1; body: 2'. Each
+    /// name must be one of @p bodies.
     std::string
-    value_for(ParameterHandler &prm, const std::string &entry, const std::string &body)
+    value_for(ParameterHandler               &prm,
+              const std::string              &entry,
+              const std::string              &body,
+              const std::vector<std::string> &bodies)
     {
       const std::string text = prm.get(entry);
       if (text.find(':') == std::string::npos)
         return Input::trim(text);
+      std::string value;
+      bool        found = false;
       for (const std::string &item : Input::split(text, ';'))
         {
           const std::size_t colon = item.find(':');
@@ -60,24 +67,42 @@ namespace FrictionalContact
             Input::fail("Material/" + entry, text,
                         "one value for every body, or 'body: value' for each "
                         "body, separated by ';'");
-          if (Input::trim(item.substr(0, colon)) == body)
-            return Input::trim(item.substr(colon + 1));
+          const std::string name = Input::trim(item.substr(0, colon));
+          if (std::find(bodies.begin(), bodies.end(), name) == bodies.end())
+            {
+              std::string list;
+              for (const std::string &known : bodies)
+                list += (list.empty() ? "'" : ", '") + known + "'";
+              Input::fail("Material/" + entry, text,
+                          "'" + name + "' is not a body of the geometry; its "
+                          "bodies are " + list);
+            }
+          if (name == body)
+            {
+              value = Input::trim(item.substr(colon + 1));
+              found = true;
+            }
         }
-      Input::fail("Material/" + entry, text, "a value for the body '" + body + "'");
+      if (!found)
+        Input::fail("Material/" + entry, text, "a value for the body '" + body + "'");
+      return value;
     }
   } // namespace
 
 
 
   template <int dim>
-  LinearElasticMaterial<dim>::LinearElasticMaterial(ParameterHandler  &prm,
-                                                    const std::string &body)
+  LinearElasticMaterial<dim>::LinearElasticMaterial(
+    ParameterHandler               &prm,
+    const std::string              &body,
+    const std::vector<std::string> &all_bodies)
   {
     prm.enter_subsection("Material");
-    const std::string young   = value_for(prm, "Young's modulus", body);
-    const std::string poisson = value_for(prm, "Poisson's ratio", body);
-    const std::string model   = value_for(prm, "Two-dimensional model", body);
-    const std::string formulation = value_for(prm, "Formulation", body);
+    const std::string young = value_for(prm, "Young's modulus", body, all_bodies);
+    const std::string poisson = value_for(prm, "Poisson's ratio", body, all_bodies);
+    const std::string model =
+      value_for(prm, "Two-dimensional model", body, all_bodies);
+    const std::string formulation = value_for(prm, "Formulation", body, all_bodies);
     prm.leave_subsection();
     youngs_modulus =
       Input::parse_number("Material/Young's modulus", young, "a number is expected");
@@ -191,9 +216,13 @@ namespace FrictionalContact
   Materials<dim>::Materials(ParameterHandler                                &prm,
                             const std::map<std::string, types::material_id> &bodies)
   {
+    std::vector<std::string> all_bodies;
+    for (const auto &[name, id] : bodies)
+      all_bodies.push_back(name);
     for (const auto &[name, id] : bodies)
       {
-        materials[id] = std::make_unique<LinearElasticMaterial<dim>>(prm, name);
+        materials[id] =
+          std::make_unique<LinearElasticMaterial<dim>>(prm, name, all_bodies);
         names[id]     = name;
       }
   }

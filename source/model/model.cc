@@ -262,7 +262,25 @@ namespace FrictionalContact
   Model<dim>::assemble()
   {
     body->assemble();
-    body->check_rigid_body_motion_is_prevented();
+    held_by_contact_alone.clear();
+    const std::map<std::string, types::material_id> &all = bodies;
+    for (const types::material_id id : body->bodies_free_to_move())
+      {
+        if (contact->active() && contact->bodies_facing_contact().count(id) > 0)
+          {
+            held_by_contact_alone.insert(id);
+            continue;
+          }
+        const std::string name = body->body_name(id);
+        throw InputError(
+          "<Boundary conditions/Fixed boundaries> does not hold " +
+          (all.size() == 1 ? std::string("the body") : "the body '" + name + "'") +
+          " against rigid-body motion (translation or rotation), and no "
+          "contact (<Contact/Contact boundaries> or <Contact/Pairs>) faces it "
+          "to hold it: fix or prescribe more boundaries or components, e.g. "
+          "'set Fixed boundaries = " +
+          (all.size() == 1 ? std::string("left") : name + " left") + "'");
+      }
   }
 
 

@@ -91,6 +91,69 @@ namespace FrictionalContact
 
 
 
+    /**
+     * For each body only contact holds, makes its candidates nearest to
+     * contact active (their gap within a small tolerance of the body's
+     * smallest): the first Newton matrix then holds it where it will touch,
+     * instead of leaving it free (K singular). For a cold start; returns
+     * how many nodes of this rank it made active.
+     */
+    template <int dim>
+    unsigned int
+    activate_nearest_nodes(const IncrementalProblem<dim> &problem,
+                           const Vector                  &du,
+                           ActiveSets<dim>               &sets)
+    {
+      const ContactHeldBodies &held = problem.contact_held;
+      const unsigned int       n_bodies = held.names.size();
+      std::vector<double> smallest(n_bodies, std::numeric_limits<double>::max());
+      std::vector<double> gap(sets.conditions.size());
+      for (unsigned int j = 0; j < gap.size(); ++j)
+        {
+          gap[j] = problem.gaps[j] - problem.relative_displacement(j, du)[0];
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            if (held.held_by_candidate[j] & (std::uint64_t(1) << b))
+              smallest[b] = std::min(smallest[b], gap[j]);
+        }
+      Utilities::MPI::min(smallest, du.get_mpi_communicator(), smallest);
+      unsigned int activated = 0;
+      for (unsigned int j = 0; j < gap.size(); ++j)
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          if ((held.held_by_candidate[j] & (std::uint64_t(1) << b)) &&
+              sets.conditions[j] == NodeCondition::none &&
+              gap[j] <= smallest[b] +
+                          1e-8 * std::max(std::abs(smallest[b]), problem.length_scale))
+            {
+              sets.conditions[j] = NodeCondition::normal_fixed;
+              ++activated;
+            }
+      return activated;
+    }
+
+
+
+    /// The first body only contact holds that the node conditions leave
+    /// without any node in contact, or an empty name. Collective.
+    inline std::string
+    body_left_without_contact(const ContactHeldBodies          &held,
+                              const std::vector<NodeCondition> &conditions,
+                              const MPI_Comm                    comm)
+    {
+      std::vector<unsigned int> touching(held.names.size(), 0);
+      for (unsigned int j = 0; j < conditions.size(); ++j)
+        if (conditions[j] != NodeCondition::none)
+          for (unsigned int b = 0; b < touching.size(); ++b)
+            if (held.held_by_candidate[j] & (std::uint64_t(1) << b))
+              touching[b] = 1;
+      Utilities::MPI::max(touching, comm, touching);
+      for (unsigned int b = 0; b < touching.size(); ++b)
+        if (touching[b] == 0)
+          return held.names[b];
+      return "";
+    }
+
+
+
     /// Whether any candidate on any rank has a reaction (a warm start).
     template <int dim>
     bool
@@ -162,7 +225,8 @@ namespace FrictionalContact
                                     sets.conditions,
                                     sets.slip_direction,
                                     sets.robin,
-                                    any_slip);
+                                    any_slip,
+                                    problem.contact_held.stabilization);
       K.vmult(K_du, du);
       rhs = problem.load;
       rhs -= K_du;
@@ -490,7 +554,8 @@ namespace FrictionalContact
 
     // From a cold start, the frictionless problem first: the normal sets
     // settle in a few steps, and friction then starts from real pressures.
-    bool friction = has_friction && any_reaction(r, comm);
+    const bool cold_start = !any_reaction(r, comm);
+    bool       friction   = has_friction && !cold_start;
 
     const double load_norm = problem.load.l2_norm();
     NewtonWorkspace<dim> work(du, n);
@@ -509,8 +574,11 @@ namespace FrictionalContact
       volumetric != nullptr ? 0.01 :
       linear_solver.newton_uses_geometric_multigrid() ? 0.1 : 1.;
     ForcingTerm forcing(forcing_rule, scale_of_forcing * linear_reduction);
-    ConditionPreconditioner<dim> preconditioner(
-      linear_solver, contact, preconditioner_sees_conditions, comm);
+    ConditionPreconditioner<dim> preconditioner(linear_solver,
+                                                contact,
+                                                preconditioner_sees_conditions,
+                                                problem.contact_held.stabilization,
+                                                comm);
     MeritWatch                progress;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
@@ -533,6 +601,24 @@ namespace FrictionalContact
             progress.restart(k);
             changes = Utilities::MPI::sum(
               classify(problem, du, r, c, true, sets), comm);
+          }
+        if (problem.contact_held.any())
+          {
+            if (k == 0 && cold_start)
+              changes += Utilities::MPI::sum(
+                activate_nearest_nodes(problem, du, sets), comm);
+            if (const std::string body = body_left_without_contact(
+                  problem.contact_held, conditions, comm);
+                !body.empty())
+              {
+                result.failure =
+                  "only contact holds the body '" + body + "', and Newton "
+                  "iteration " + std::to_string(k + 1) + " leaves it no node in "
+                  "contact: its load pulls it away from what it touches, and "
+                  "there is no equilibrium; hold it with <Boundary "
+                  "conditions/Fixed boundaries>, or change its load";
+                break;
+              }
           }
 
         // The preconditioner for the new conditions, if they changed.

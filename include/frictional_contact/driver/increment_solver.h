@@ -149,6 +149,12 @@ namespace FrictionalContact
                  const TrilinosWrappers::MPI::Vector &start,
                  const Tensor<1, dim>                &obstacle_motion) const;
 
+    /// The bodies of the model that only contact holds, for the problem:
+    /// their names, which candidates hold them, and the stabilisation S.
+    void
+    describe_contact_held_bodies(const Model<dim>   &model,
+                                 ContactHeldBodies &held) const;
+
     /// Solves the contact problem of @p outcome from the elastic solution
     /// in outcome.du_solved (if any); @p start is u^l with the prescribed
     /// increment.

@@ -272,6 +272,29 @@ namespace FrictionalContact
     double
     orthonormality_defect() const;
 
+    /// The bodies that contact may hold: those with a vertex on a contact
+    /// boundary (facing the obstacle) or on either side of a pair (after
+    /// setup(); the same on all ranks).
+    const std::set<types::material_id> &
+    bodies_facing_contact() const
+    {
+      return facing_contact;
+    }
+
+    /// The bodies candidate j holds where it is in contact: its own, and
+    /// for a pair's slave node the master's bodies.
+    std::set<types::material_id>
+    bodies_held_by(const unsigned int j) const
+    {
+      std::set<types::material_id> held = {nodes[j].body};
+      if (nodes[j].pair >= 0)
+        {
+          const auto &masters = interfaces[nodes[j].pair].master_bodies();
+          held.insert(masters.begin(), masters.end());
+        }
+      return held;
+    }
+
     /// Whether candidate j is a slave node of a pair of two bodies (not
     /// facing the obstacle or a tool): its force acts between the bodies
     /// and adds nothing to the whole.
@@ -378,6 +401,8 @@ namespace FrictionalContact
       /// The pair whose slave node this is (-1: a candidate facing the
       /// obstacle); small, to sit in the padding after free.
       std::int16_t pair = -1;
+      /// The body (material id) of the node's cells; in the padding too.
+      types::material_id body = 0;
       /// t_n,j: unit vector pointing into the obstacle.
       Tensor<1, dim> into_obstacle;
       /// Lumped area on the contact boundaries (see nodal_area()); for a
@@ -402,6 +427,8 @@ namespace FrictionalContact
     /// The obstacle's friction cone, then one per pair (in <Contact/Pairs>'s order).
     std::vector<FrictionCone<dim>>               cones;
     std::set<types::boundary_id>                 contact_boundaries;
+    /// See bodies_facing_contact().
+    std::set<types::material_id>                 facing_contact;
     /// The pairs of two bodies (<Contact/Pairs>), and the gap of each
     /// candidate that is a pair's slave node (empty without pairs).
     std::vector<MortarInterface<dim>>            interfaces;

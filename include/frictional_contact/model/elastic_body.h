@@ -18,6 +18,7 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace FrictionalContact
@@ -68,12 +69,17 @@ namespace FrictionalContact
     assemble();
 
     /**
-     * Throws an InputError unless the fixed boundaries hold each body
-     * against every rigid-body motion (translations and rotations): a body
-     * held by nothing but contact makes K singular.
+     * The bodies that the fixed boundaries do not hold against every
+     * rigid-body motion (translations and rotations): K is singular on
+     * them, and only contact can hold them. Collective.
      */
-    void
-    check_rigid_body_motion_is_prevented() const;
+    std::set<types::material_id>
+    bodies_free_to_move() const;
+
+    /// Whether each locally owned dof (by its index in the owned set) is
+    /// a dof of a cell of the bodies @p ids.
+    std::vector<bool>
+    owned_dofs_of(const std::set<types::material_id> &ids) const;
 
     /**
      * The internal force K u at the unconstrained dofs (zero at the

@@ -29,10 +29,13 @@ namespace FrictionalContact
     declare_parameters(ParameterHandler &prm);
 
     /**
-     * Reads the subsection "Material" for the body @p body: an entry is one
-     * value for every body, or 'body: value; other body: value'.
+     * Reads the subsection "Material" for the body @p body of the bodies
+     * @p all_bodies: an entry is one value for every body, or 'body:
+     * value; other body: value'.
      */
-    LinearElasticMaterial(ParameterHandler &prm, const std::string &body);
+    LinearElasticMaterial(ParameterHandler               &prm,
+                          const std::string              &body,
+                          const std::vector<std::string> &all_bodies);
 
     /// The fourth-order tensor C with sigma = C : epsilon (of the standard
     /// element).

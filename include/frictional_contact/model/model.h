@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace FrictionalContact
@@ -60,9 +61,17 @@ namespace FrictionalContact
           const std::vector<TrilinosWrappers::MPI::Vector *> &fields);
 
     /// Assembles K and the loads; throws an InputError if the supports
-    /// allow a rigid-body motion.
+    /// allow a rigid-body motion of a body that no contact faces.
     void
     assemble();
+
+    /// The bodies (material ids) that only contact holds against rigid-body
+    /// motion: K is singular on them (after assemble()).
+    const std::set<types::material_id> &
+    bodies_held_by_contact_alone() const
+    {
+      return held_by_contact_alone;
+    }
 
     /// The header lines of a run: scene, mesh, contact.
     void
@@ -156,6 +165,8 @@ namespace FrictionalContact
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<ElasticBody<dim>>        body;
     std::unique_ptr<ContactOperator<dim>>    contact;
+    /// See bodies_held_by_contact_alone().
+    std::set<types::material_id> held_by_contact_alone;
     /// What <Linear solver/Preconditioner> = auto chose for the memory, if
     /// it chose (choose_matrix_free_for_memory()).
     std::string automatic_choice;

@@ -6,11 +6,47 @@
 #include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/contact_map.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace FrictionalContact
 {
+  /**
+   * The bodies of a problem that only contact holds against rigid-body
+   * motion: K is singular on them until contact nodes hold them. The
+   * semismooth Newton method starts with their nodes nearest to contact
+   * active, stops with a clear message where an iteration leaves such a
+   * body no contact node, and adds S to its Newton matrices (not to the
+   * residual: S changes the steps, not the solution).
+   */
+  struct ContactHeldBodies
+  {
+    /// At most this many bodies (the bits of held_by_candidate).
+    static constexpr unsigned int max_bodies = 64;
+    /// S = stabilization_factor diag(K) at the dofs of these bodies: small
+    /// against K where contact holds the body (the Newton steps converge as
+    /// without), finite where it does not yet (a rotation about the one
+    /// node a ball touches).
+    static constexpr double stabilization_factor = 1e-8;
+
+    std::vector<std::string> names;
+    /// For each local candidate, the bodies it holds when it is in contact
+    /// (bit k: names[k]).
+    std::vector<std::uint64_t> held_by_candidate;
+    /// S as a vector of its diagonal (locally owned entries); empty if
+    /// there are no such bodies.
+    TrilinosWrappers::MPI::Vector stabilization;
+
+    bool
+    any() const
+    {
+      return !names.empty();
+    }
+  };
+
+
+
   /**
    * One incremental problem of the paper, eq. (9): find du and r with
    * K du - p = T r and the cone complementarity at every candidate, where
@@ -46,6 +82,8 @@ namespace FrictionalContact
     /// obstacle, or a rigid tool) in the frame of j, tangential components
     /// only (component 0 is zero: the gap has it).
     std::vector<Tensor<1, dim>> obstacle_slip;
+    /// The bodies only contact holds (none for most scenes).
+    ContactHeldBodies contact_held;
 
     /// (t_n,j^T du, T_t,j^T du - obstacle's tangential motion)
     Tensor<1, dim>

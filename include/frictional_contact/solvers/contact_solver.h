@@ -70,6 +70,14 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Whether the method solves problems whose K is singular on bodies
+    /// that only contact holds (IncrementalProblem::contact_held).
+    virtual bool
+    handles_contact_held_bodies() const
+    {
+      return false;
+    }
+
     /**
      * Whether the elastic solution of an increment is worth trying first
      * (<Contact solver/Try the elastic solution first>): a method that

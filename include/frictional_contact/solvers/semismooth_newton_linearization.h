@@ -66,7 +66,8 @@ namespace FrictionalContact
 
     /**
      * The Newton operator on the subspace of the node conditions:
-     * w -> P ((I + C) K w + B w). C couples the friction force of a
+     * w -> P ((I + C) (K + S) w + B w), S the stabilisation of bodies that
+     * only contact holds (ContactHeldBodies; zero for most scenes). C couples the friction force of a
      * slipping node to its normal reaction, so that its tangential equation
      * reads T_t^T R + mu n (t_n^T R) + kappa Q T_t^T du = 0 with R = K du - p:
      * r_t = -mu r_n n - kappa Q u_t, the linearisation of
@@ -84,7 +85,8 @@ namespace FrictionalContact
                        const std::vector<NodeCondition>     &conditions,
                        const std::vector<Tensor<1, dim>>    &slip_direction,
                        const std::vector<double>            &robin,
-                       const bool                            friction)
+                       const bool                            friction,
+                       const Vector                         &stabilization)
         : K(K)
         , P(P)
         , contact(contact)
@@ -92,6 +94,7 @@ namespace FrictionalContact
         , slip_direction(slip_direction)
         , robin(robin)
         , friction(friction)
+        , stabilization(stabilization)
       {}
 
       void
@@ -101,11 +104,19 @@ namespace FrictionalContact
         finish(dst, src);
       }
 
-      /// The operator from the force K u in @p force: the coupling, the
-      /// Robin term of @p u, the projection.
+      /// The operator from the force K u in @p force: the stabilisation,
+      /// the coupling, the Robin term of @p u, the projection.
       void
       finish(Vector &force, const Vector &u) const
       {
+        if (stabilization.size() > 0)
+          {
+            const double *S = stabilization.begin();
+            const double *x = u.begin();
+            double       *f = force.begin();
+            for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+              f[i] += S[i] * x[i];
+          }
         couple(force);
         add_robin(u, 1., force);
         P.apply(force);
@@ -154,6 +165,8 @@ namespace FrictionalContact
       /// Whether the slipping nodes carry their friction (mu_j of each
       /// node's pair) or, in the frictionless start, none.
       const bool                            friction;
+      /// The diagonal of S (empty: none).
+      const Vector                         &stabilization;
     };
 
     /// The node conditions of an active-set step and what goes with them.

@@ -20,7 +20,9 @@ namespace FrictionalContact
      * preconditioner of K is not ML's, or the contact map has no nodal
      * blocks): the preconditioner of K itself, which does not see the
      * conditions, so that its Krylov iterations grow with the size of the
-     * contact zone and with the slip set (doc/algorithm.md). Owns the
+     * contact zone and with the slip set (doc/algorithm.md). The
+     * stabilisation S of bodies that only contact holds joins the springs
+     * (1 x 1 blocks), so that the coarse levels are not singular. Owns the
      * springs the AMG was made for.
      */
     template <int dim>
@@ -35,12 +37,23 @@ namespace FrictionalContact
       ConditionPreconditioner(ShiftedStiffnessSolver &linear_solver,
                               const ContactMap<dim>  &contact,
                               const bool              with_conditions,
+                              const Vector           &stabilization,
                               const MPI_Comm          comm)
         : linear_solver(linear_solver)
         , contact(contact)
         , amg(nullptr)
         , built(contact.n_local())
       {
+        if (stabilization.size() > 0)
+          {
+            const IndexSet owned = stabilization.locally_owned_elements();
+            const double  *S     = stabilization.begin();
+            for (unsigned int i = 0; i < owned.n_elements(); ++i)
+              if (S[i] > 0)
+                stabilizing_blocks.push_back({{owned.nth_index_in_set(i)}, {S[i]}});
+            // The first update() makes the AMG with them.
+            unbuilt = true;
+          }
         if (!with_conditions)
           return;
         SpringPreconditioner &candidate = linear_solver.spring_preconditioner();
@@ -76,9 +89,10 @@ namespace FrictionalContact
               changed || (springs[j] - built[j]).norm() > 0.1 * built[j].norm() +
                                                              1e-12 * c[j];
           }
-        if (!Utilities::MPI::logical_or(changed, comm))
+        if (!Utilities::MPI::logical_or(changed || unbuilt, comm))
           return false;
-        std::vector<NodalBlock> blocks;
+        unbuilt = false;
+        std::vector<NodalBlock> blocks = stabilizing_blocks;
         for (unsigned int j = 0; j < c.size(); ++j)
           if (springs[j].norm() > 0)
             {
@@ -128,6 +142,10 @@ namespace FrictionalContact
       const ContactMap<dim>      &contact;
       SpringPreconditioner       *amg;
       std::vector<Tensor<2, dim>> built;
+      /// S of ContactHeldBodies, one block per dof, and whether the AMG
+      /// has not yet been made with it.
+      std::vector<NodalBlock> stabilizing_blocks;
+      bool                    unbuilt = false;
     };
   } // namespace SemismoothNewton
 } // namespace FrictionalContact

@@ -58,6 +58,14 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Yes: it starts from the nodes nearest to contact and stabilises
+    /// the Newton matrices (ContactHeldBodies).
+    bool
+    handles_contact_held_bodies() const override
+    {
+      return true;
+    }
+
     SolveStatistics
     solve(const IncrementalProblem<dim> &problem,
           ShiftedStiffnessSolver        &linear_solver,
