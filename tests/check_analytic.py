@@ -95,7 +95,9 @@ class Scene:
         self.mu = float(first_pair[2]) if len(first_pair) == 3 else \
             float(p["Contact/Friction coefficient"])
         geometry = "Geometry/Ball on plate/" if two_bodies else "Geometry/Half ball/"
-        self.radius = float(p.get(geometry + "Radius", "nan"))
+        # Only a ball has a radius Hertz can use (a flat punch has none).
+        ball = two_bodies or p.get("Geometry/Model name") == "half ball"
+        self.radius = float(p.get(geometry + "Radius", "nan")) if ball else float("nan")
         self.center = [0.0] * 3 if two_bodies else \
             [float(c) for c in p.get(geometry + "Center", "0, 0, 0").split(",")]
         self.planes = int(p.get(geometry + "Symmetry planes", "0"))

@@ -4,6 +4,7 @@
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/base/plugins.h>
 
+#include <algorithm>
 #include <map>
 
 namespace FrictionalContact
@@ -237,7 +238,9 @@ namespace FrictionalContact
                 node.position = face->vertex(v);
                 node.area     = area[first_dof];
                 node.pair     = static_cast<std::int16_t>(pair);
-                node.body     = cell->material_id();
+                const auto known =
+                  std::find(body_ids.begin(), body_ids.end(), cell->material_id());
+                node.body = static_cast<std::uint16_t>(known - body_ids.begin());
                 const auto [it, inserted] = found.emplace(first_dof, node);
                 if (!inserted && it->second.pair != pair)
                   throw InputError(
@@ -262,6 +265,9 @@ namespace FrictionalContact
     tangents.clear();
     mpi_communicator = body.get_mpi_communicator();
 
+    body_ids.clear();
+    for (const auto &[name, id] : body.get_bodies())
+      body_ids.push_back(id);
     // Keyed by the first dof of the vertex: each vertex once, in dof order.
     std::map<types::global_dof_index, Node> found;
     std::set<types::boundary_id> with_candidates =
@@ -295,7 +301,7 @@ namespace FrictionalContact
     for (const auto &[dof, node] : found)
       {
         nodes.push_back(node);
-        facing_contact.insert(node.body);
+        facing_contact.insert(body_ids[node.body]);
       }
     for (const MortarInterface<dim> &interface : interfaces)
       facing_contact.insert(interface.master_bodies().begin(),

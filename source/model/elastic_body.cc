@@ -141,7 +141,7 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  ElasticBody<dim>::cell_stiffness(const LinearElasticMaterial<dim> &material,
+  ElasticBody<dim>::cell_stiffness(const ElasticConstants<dim> &material,
                                    CellScratch                      &scratch) const
   {
     const FEValues<dim>             &fe_values     = scratch.fe_values;
@@ -207,7 +207,7 @@ namespace FrictionalContact
         cell_load(i) +=
           conditions.body_force * fe_values[displacement].value(i, q) * fe_values.JxW(q);
     if (with_matrix)
-      cell_stiffness(materials.of(cell->material_id()), scratch);
+      cell_stiffness(materials.of(cell->material_id()).elastic(), scratch);
 
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())
@@ -291,7 +291,7 @@ namespace FrictionalContact
     LameParameters lame;
     for (const auto &[name, id] : bodies)
       {
-        const SymmetricTensor<4, dim> &C = materials.of(id).stress_strain_tensor();
+        const SymmetricTensor<4, dim> &C = materials.of(id).elastic().stress_strain_tensor();
         lame[id] = {{C[0][0][1][1], C[0][1][0][1]}};
       }
     return lame;
@@ -306,7 +306,7 @@ namespace FrictionalContact
     LameParameters lame = lame_parameters();
     for (auto &[id, lambda_mu] : lame)
       lambda_mu =
-        VolumetricBlocks<dim>::reduced_lame_parameters(materials.of(id), lambda_mu);
+        VolumetricBlocks<dim>::reduced_lame_parameters(materials.of(id).elastic(), lambda_mu);
     return lame;
   }
 

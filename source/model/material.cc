@@ -1,4 +1,5 @@
 #include <frictional_contact/base/input.h>
+#include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/material.h>
 
 #include <algorithm>
@@ -8,9 +9,8 @@ namespace FrictionalContact
 {
   template <int dim>
   void
-  LinearElasticMaterial<dim>::declare_parameters(ParameterHandler &prm)
+  ElasticConstants<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Material");
     prm.declare_entry("Young's modulus",
                       "1",
                       Patterns::Anything(),
@@ -38,76 +38,94 @@ namespace FrictionalContact
       "which is Q1-P0 with the pressure condensed), which does not lock "
       "when the material is nearly incompressible. 'auto' uses B-bar when "
       "Poisson's ratio exceeds 0.45 (in 3D and plane strain; plane stress "
-      "does not lock) and the standard element otherwise.");
-    prm.leave_subsection();
+      "does not lock) or the law flows plastically (plastic flow keeps the "
+      "volume, and the standard element locks where it flows), and the "
+      "standard element otherwise.");
   }
 
 
 
   namespace
   {
-    /// The value of the entry @p entry of subsection Material for @p body:
-    /// the whole text, or the part after 'body:' in 'a: 1; body: 2'. Each
-    /// name must be one of @p bodies.
     std::string
-    value_for(ParameterHandler               &prm,
-              const std::string              &entry,
-              const std::string              &body,
-              const std::vector<std::string> &bodies)
+    joined(const std::vector<std::string> &subsections)
     {
-      const std::string text = prm.get(entry);
-      if (text.find(':') == std::string::npos)
-        return Input::trim(text);
-      std::string value;
-      bool        found = false;
-      for (const std::string &item : Input::split(text, ';'))
-        {
-          const std::size_t colon = item.find(':');
-          if (colon == std::string::npos)
-            Input::fail("Material/" + entry, text,
-                        "one value for every body, or 'body: value' for each "
-                        "body, separated by ';'");
-          const std::string name = Input::trim(item.substr(0, colon));
-          if (std::find(bodies.begin(), bodies.end(), name) == bodies.end())
-            {
-              std::string list;
-              for (const std::string &known : bodies)
-                list += (list.empty() ? "'" : ", '") + known + "'";
-              Input::fail("Material/" + entry, text,
-                          "'" + name + "' is not a body of the geometry; its "
-                          "bodies are " + list);
-            }
-          if (name == body)
-            {
-              value = Input::trim(item.substr(colon + 1));
-              found = true;
-            }
-        }
-      if (!found)
-        Input::fail("Material/" + entry, text, "a value for the body '" + body + "'");
-      return value;
+      std::string path;
+      for (const std::string &name : subsections)
+        path += (path.empty() ? "" : "/") + name;
+      return path;
     }
   } // namespace
 
 
 
-  template <int dim>
-  LinearElasticMaterial<dim>::LinearElasticMaterial(
-    ParameterHandler               &prm,
-    const std::string              &body,
-    const std::vector<std::string> &all_bodies)
+  BodyEntries::BodyEntries(const ParameterHandler         &prm,
+                           const std::vector<std::string> &subsections,
+                           const std::string              &body,
+                           const std::vector<std::string> &all_bodies)
+    : prm(prm)
+    , subsections(subsections)
+    , path(joined(subsections))
+    , body_name(body)
+    , all_bodies(all_bodies)
+  {}
+
+
+
+  std::string
+  BodyEntries::get(const std::string &entry) const
   {
-    prm.enter_subsection("Material");
-    const std::string young = value_for(prm, "Young's modulus", body, all_bodies);
-    const std::string poisson = value_for(prm, "Poisson's ratio", body, all_bodies);
-    const std::string model =
-      value_for(prm, "Two-dimensional model", body, all_bodies);
-    const std::string formulation = value_for(prm, "Formulation", body, all_bodies);
-    prm.leave_subsection();
-    youngs_modulus =
-      Input::parse_number("Material/Young's modulus", young, "a number is expected");
-    poissons_ratio =
-      Input::parse_number("Material/Poisson's ratio", poisson, "a number is expected");
+    const std::string text = prm.get(subsections, entry);
+    if (text.find(':') == std::string::npos)
+      return Input::trim(text);
+    std::string value;
+    bool        found = false;
+    for (const std::string &item : Input::split(text, ';'))
+      {
+        const std::size_t colon = item.find(':');
+        if (colon == std::string::npos)
+          Input::fail(path_of(entry), text,
+                      "one value for every body, or 'body: value' for each "
+                      "body, separated by ';'");
+        const std::string name = Input::trim(item.substr(0, colon));
+        if (std::find(all_bodies.begin(), all_bodies.end(), name) == all_bodies.end())
+          {
+            std::string list;
+            for (const std::string &known : all_bodies)
+              list += (list.empty() ? "'" : ", '") + known + "'";
+            Input::fail(path_of(entry), text,
+                        "'" + name + "' is not a body of the geometry; its "
+                        "bodies are " + list);
+          }
+        if (name == body_name)
+          {
+            value = Input::trim(item.substr(colon + 1));
+            found = true;
+          }
+      }
+    if (!found)
+      Input::fail(path_of(entry), text, "a value for the body '" + body_name + "'");
+    return value;
+  }
+
+
+
+  double
+  BodyEntries::get_number(const std::string &entry) const
+  {
+    return Input::parse_number(path_of(entry), get(entry), "a number is expected");
+  }
+
+
+
+  template <int dim>
+  ElasticConstants<dim>::ElasticConstants(const BodyEntries &entries,
+                                          const bool         isochoric)
+  {
+    youngs_modulus                = entries.get_number("Young's modulus");
+    poissons_ratio                = entries.get_number("Poisson's ratio");
+    const std::string model       = entries.get("Two-dimensional model");
+    const std::string formulation = entries.get("Formulation");
     if (model != "plane strain" && model != "plane stress")
       Input::fail("Material/Two-dimensional model", model,
                   "'plane strain' or 'plane stress' is expected");
@@ -126,16 +144,19 @@ namespace FrictionalContact
                   "a number strictly between -1 and 0.5 is expected");
 
     const bool locks = !plane_stress && poissons_ratio > locking_threshold;
-    mean_dilatation  = formulation == "B-bar" || (formulation == "auto" && locks);
-    standard_forced  = formulation == "standard";
+    mean_dilatation_for_flow = formulation == "auto" && !locks && isochoric && !plane_stress;
+    mean_dilatation =
+      formulation == "B-bar" || (formulation == "auto" && (locks || mean_dilatation_for_flow));
+    standard_forced = formulation == "standard";
 
     const double mu = youngs_modulus / (2. * (1. + poissons_ratio));
     double       lambda = youngs_modulus * poissons_ratio /
                     ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
     if (plane_stress)
       lambda = 2. * lambda * mu / (lambda + 2. * mu);
-    shear_modulus = mu;
-    bulk_modulus  = lambda + 2. * mu / dim;
+    shear_modulus   = mu;
+    bulk_modulus    = lambda + 2. * mu / dim;
+    bulk_modulus_3d = lambda + 2. * mu / 3.;
 
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
@@ -150,7 +171,7 @@ namespace FrictionalContact
 
   template <int dim>
   SymmetricTensor<2, dim>
-  LinearElasticMaterial<dim>::stress(const SymmetricTensor<2, dim> &strain,
+  ElasticConstants<dim>::stress(const SymmetricTensor<2, dim> &strain,
                                      const double volumetric_strain) const
   {
     return 2. * shear_modulus * deviator(strain) +
@@ -161,7 +182,7 @@ namespace FrictionalContact
 
   template <int dim>
   double
-  LinearElasticMaterial<dim>::out_of_plane_stress(
+  ElasticConstants<dim>::out_of_plane_stress(
     const SymmetricTensor<2, dim> &stress) const
   {
     // Plane strain: sigma_zz = nu (sigma_xx + sigma_yy), which holds for
@@ -174,7 +195,7 @@ namespace FrictionalContact
 
   template <int dim>
   double
-  LinearElasticMaterial<dim>::mean_stress(const double volumetric_strain) const
+  ElasticConstants<dim>::mean_stress(const double volumetric_strain) const
   {
     const double in_plane_trace = dim * bulk_modulus * volumetric_strain;
     const double out_of_plane =
@@ -186,7 +207,7 @@ namespace FrictionalContact
 
   template <int dim>
   std::string
-  LinearElasticMaterial<dim>::describe() const
+  ElasticConstants<dim>::describe() const
   {
     std::string text = "E = " + Input::to_text(youngs_modulus) +
                        ", nu = " + Input::to_text(poissons_ratio);
@@ -201,7 +222,7 @@ namespace FrictionalContact
 
   template <int dim>
   std::string
-  LinearElasticMaterial<dim>::locking_warning() const
+  ElasticConstants<dim>::locking_warning() const
   {
     if (!standard_forced || plane_stress ||
         !(poissons_ratio > locking_threshold))
@@ -213,24 +234,82 @@ namespace FrictionalContact
   }
 
   template <int dim>
+  void
+  MaterialModel<dim>::parse_parameters(const BodyEntries &material,
+                                       const BodyEntries & /*own*/)
+  {
+    elastic_constants =
+      std::make_unique<ElasticConstants<dim>>(material, flows_isochorically());
+  }
+
+
+
+  template <int dim>
+  std::string
+  MaterialModel<dim>::describe() const
+  {
+    return elastic_constants->describe();
+  }
+
+
+
+  template <int dim>
+  void
+  Materials<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    std::string names, documentation;
+    for (const std::string &name : PluginRegistry<MaterialModel<dim>>::names())
+      names += (names.empty() ? "'" : "', '") + name;
+    prm.declare_entry("Model",
+                      "linear elastic",
+                      Patterns::Anything(),
+                      "The material law of each body, one for all bodies or "
+                      "'base: linear elastic; block: J2 plasticity': " + names +
+                        "'. Each law reads the elastic entries of this "
+                        "subsection and its own subsection.");
+    ElasticConstants<dim>::declare_parameters(prm);
+    PluginRegistry<MaterialModel<dim>>::declare_subsections(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
   Materials<dim>::Materials(ParameterHandler                                &prm,
                             const std::map<std::string, types::material_id> &bodies)
   {
     std::vector<std::string> all_bodies;
     for (const auto &[name, id] : bodies)
       all_bodies.push_back(name);
+    const std::vector<std::string> laws = PluginRegistry<MaterialModel<dim>>::names();
     for (const auto &[name, id] : bodies)
       {
-        materials[id] =
-          std::make_unique<LinearElasticMaterial<dim>>(prm, name, all_bodies);
-        names[id]     = name;
+        const BodyEntries material(prm, {"Material"}, name, all_bodies);
+        const std::string law = material.get("Model");
+        if (std::find(laws.begin(), laws.end(), law) == laws.end())
+          {
+            std::string list;
+            for (const std::string &known : laws)
+              list += (list.empty() ? "'" : ", '") + known + "'";
+            Input::fail("Material/Model", prm.get({"Material"}, "Model"),
+                        "one of " + list + " (for every body, or per body)");
+          }
+        materials[id] = PluginRegistry<MaterialModel<dim>>::create_unparsed(law);
+        const BodyEntries own(
+          prm,
+          {"Material", PluginRegistry<MaterialModel<dim>>::subsection_name(law)},
+          name,
+          all_bodies);
+        materials[id]->parse_parameters(material, own);
+        names[id] = name;
       }
   }
 
 
 
   template <int dim>
-  const LinearElasticMaterial<dim> &
+  const MaterialModel<dim> &
   Materials<dim>::of(const types::material_id id) const
   {
     const auto it = materials.find(id);
@@ -242,10 +321,34 @@ namespace FrictionalContact
 
   template <int dim>
   bool
+  Materials<dim>::all_linear() const
+  {
+    for (const auto &[id, material] : materials)
+      if (!material->is_linear())
+        return false;
+    return true;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Materials<dim>::max_history_values() const
+  {
+    unsigned int n = 0;
+    for (const auto &[id, material] : materials)
+      n = std::max(n, material->n_history_values());
+    return n;
+  }
+
+
+
+  template <int dim>
+  bool
   Materials<dim>::any_mean_dilatation() const
   {
     for (const auto &[id, material] : materials)
-      if (material->mean_dilatation)
+      if (material->elastic().mean_dilatation)
         return true;
     return false;
   }
@@ -272,15 +375,18 @@ namespace FrictionalContact
   {
     std::vector<std::string> warnings;
     for (const auto &[id, material] : materials)
-      if (const std::string warning = material->locking_warning(); !warning.empty())
+      if (const std::string warning = material->elastic().locking_warning();
+          !warning.empty())
         warnings.push_back(materials.size() == 1 ?
                              warning :
                              warning + " (body '" + names.at(id) + "')");
     return warnings;
   }
 
-  template class LinearElasticMaterial<2>;
-  template class LinearElasticMaterial<3>;
+  template class ElasticConstants<2>;
+  template class ElasticConstants<3>;
+  template class MaterialModel<2>;
+  template class MaterialModel<3>;
   template class Materials<2>;
   template class Materials<3>;
 } // namespace FrictionalContact

@@ -40,7 +40,7 @@ namespace FrictionalContact
     MeshRefinement<dim>::declare_parameters(prm);
     prm.leave_subsection();
 
-    LinearElasticMaterial<dim>::declare_parameters(prm);
+    Materials<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
     ContactOperator<dim>::declare_parameters(prm);
   }

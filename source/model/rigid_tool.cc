@@ -350,8 +350,9 @@ namespace FrictionalContact
           vertices.push_back(x);
           return static_cast<unsigned int>(vertices.size() - 1);
         };
-        const Point<dim> &a = vertices[polygon[0]], &b = vertices[polygon[1]],
-                         &c = vertices[polygon[2]];
+        // Copies: adding vertices may move the others.
+        const Point<dim> a = vertices[polygon[0]], b = vertices[polygon[1]],
+                         c = vertices[polygon[2]];
         const unsigned int g  = add_vertex(Point<dim>((a + b + c) / 3.));
         const unsigned int ab = add_vertex(Point<dim>((a + b) / 2.));
         const unsigned int bc = add_vertex(Point<dim>((b + c) / 2.));

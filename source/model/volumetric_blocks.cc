@@ -13,7 +13,7 @@ namespace FrictionalContact
     /// 81 with 0.4, 79 with 0.45 and 135 with 0.48.
     template <int dim>
     double
-    reduced_bulk_modulus(const LinearElasticMaterial<dim> &material)
+    reduced_bulk_modulus(const ElasticConstants<dim> &material)
     {
       return 4. * material.shear_modulus + 2. * material.shear_modulus / dim;
     }
@@ -24,7 +24,7 @@ namespace FrictionalContact
     /// (0: none, the material is not B-bar or not stiff enough).
     template <int dim>
     double
-    penalty_modulus(const LinearElasticMaterial<dim> &material)
+    penalty_modulus(const ElasticConstants<dim> &material)
     {
       return material.mean_dilatation ?
                std::max(0., material.bulk_modulus - reduced_bulk_modulus(material)) :
@@ -36,7 +36,7 @@ namespace FrictionalContact
     /// 1 / kappa_p + 1 / M_0, per volume, of the approximate Schur complement.
     template <int dim>
     double
-    schur_compliance(const LinearElasticMaterial<dim> &material)
+    schur_compliance(const ElasticConstants<dim> &material)
     {
       return 1. / penalty_modulus(material) +
              1. / (reduced_bulk_modulus(material) +
@@ -64,7 +64,7 @@ namespace FrictionalContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         any_penalty =
-          any_penalty || penalty_modulus(materials.of(cell->material_id())) > 0;
+          any_penalty || penalty_modulus(materials.of(cell->material_id()).elastic()) > 0;
     any_penalty = Utilities::MPI::logical_or(any_penalty,
                                              stiffness.get_mpi_communicator());
     if (!active())
@@ -128,7 +128,7 @@ namespace FrictionalContact
     const std::vector<types::global_dof_index>           &dof_indices,
     const AffineConstraints<double>                      &constraints)
   {
-    const LinearElasticMaterial<dim> &material = materials.of(cell->material_id());
+    const ElasticConstants<dim> &material = materials.of(cell->material_id()).elastic();
     const double       penalty = penalty_modulus(material);
     const unsigned int n       = dof_indices.size();
     for (unsigned int i = 0; i < n; ++i)
@@ -207,7 +207,7 @@ namespace FrictionalContact
   template <int dim>
   std::array<double, 2>
   VolumetricBlocks<dim>::reduced_lame_parameters(
-    const LinearElasticMaterial<dim> &material,
+    const ElasticConstants<dim> &material,
     const std::array<double, 2>      &of_stiffness)
   {
     if (penalty_modulus(material) == 0)

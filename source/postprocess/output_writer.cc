@@ -44,8 +44,8 @@ namespace FrictionalContact
         std::vector<dealii::Vector<double>>        &computed) const override
       {
         const auto cell = inputs.template get_cell<dim>();
-        const LinearElasticMaterial<dim> &material =
-          materials.of(cell->material_id());
+        const ElasticConstants<dim> &material =
+          materials.of(cell->material_id()).elastic();
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             Tensor<2, dim> gradient;
@@ -330,7 +330,7 @@ namespace FrictionalContact
         {
           const unsigned int c = cell->active_cell_index();
           mean_stress[c] =
-            materials.of(cell->material_id()).mean_stress(mean_dilatation[c]);
+            materials.of(cell->material_id()).elastic().mean_stress(mean_dilatation[c]);
           body_id[c] = cell->material_id();
         }
     data_out.add_data_vector(mean_stress, "mean_stress");

@@ -82,8 +82,8 @@ namespace FrictionalContact
             fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                      strain);
             const double theta = theta_bar[cell->active_cell_index()];
-            const LinearElasticMaterial<dim> &material =
-              materials.of(cell->material_id());
+            const ElasticConstants<dim> &material =
+              materials.of(cell->material_id()).elastic();
             const SymmetricTensor<2, dim> stress = material.stress(
               strain[0], material.mean_dilatation ? theta : trace(strain[0]));
             std::ostringstream row;

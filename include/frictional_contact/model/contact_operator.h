@@ -286,7 +286,7 @@ namespace FrictionalContact
     std::set<types::material_id>
     bodies_held_by(const unsigned int j) const
     {
-      std::set<types::material_id> held = {nodes[j].body};
+      std::set<types::material_id> held = {body_ids[nodes[j].body]};
       if (nodes[j].pair >= 0)
         {
           const auto &masters = interfaces[nodes[j].pair].master_bodies();
@@ -401,8 +401,9 @@ namespace FrictionalContact
       /// The pair whose slave node this is (-1: a candidate facing the
       /// obstacle); small, to sit in the padding after free.
       std::int16_t pair = -1;
-      /// The body (material id) of the node's cells; in the padding too.
-      types::material_id body = 0;
+      /// The body of the node's cells, as its index in body_ids; small, to
+      /// sit in the padding too.
+      std::uint16_t body = 0;
       /// t_n,j: unit vector pointing into the obstacle.
       Tensor<1, dim> into_obstacle;
       /// Lumped area on the contact boundaries (see nodal_area()); for a
@@ -429,6 +430,8 @@ namespace FrictionalContact
     std::set<types::boundary_id>                 contact_boundaries;
     /// See bodies_facing_contact().
     std::set<types::material_id>                 facing_contact;
+    /// The material ids of the bodies, in the order Node::body counts.
+    std::vector<types::material_id>              body_ids;
     /// The pairs of two bodies (<Contact/Pairs>), and the gap of each
     /// candidate that is a pair's slave node (empty without pairs).
     std::vector<MortarInterface<dim>>            interfaces;

@@ -123,6 +123,13 @@ namespace FrictionalContact
     std::vector<std::vector<double>>
     rigid_body_modes() const;
 
+    /// The bodies: name -> material id of their cells.
+    const std::map<std::string, types::material_id> &
+    get_bodies() const
+    {
+      return bodies;
+    }
+
     /// The name of the body whose cells have material id @p id.
     std::string
     body_name(const types::material_id id) const
@@ -263,7 +270,7 @@ namespace FrictionalContact
     /// The cell matrix of the cell @p scratch's FEValues are at (with its
     /// @p material), and its divergence integrals and volume.
     void
-    cell_stiffness(const LinearElasticMaterial<dim> &material, CellScratch &scratch) const;
+    cell_stiffness(const ElasticConstants<dim> &material, CellScratch &scratch) const;
 
     const Materials<dim>                     &materials;
     const BoundaryConditions<dim>            &conditions;

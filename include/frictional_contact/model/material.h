@@ -14,28 +14,78 @@ namespace FrictionalContact
   using namespace dealii;
 
   /**
-   * Linear isotropic elasticity: Young's modulus, Poisson's ratio, in 2D
-   * plane stress or plane strain, and the element formulation that carries
-   * the volumetric strain (the standard Q1 element, or the mean-dilatation
-   * B-bar element that does not lock as nu approaches 1/2). Owns the
-   * stress-strain tensor and its split into shear and bulk parts.
+   * The entries of the subsection "Material" (or of one of its subsections)
+   * as one body sees them: an entry holds one value for every body, or
+   * 'body: value; other body: value'. Names each entry in its errors with
+   * its full path, and refuses a value for a body the geometry does not
+   * have.
    */
-  template <int dim>
-  class LinearElasticMaterial
+  class BodyEntries
   {
   public:
-    /// Declares the entries of the subsection "Material".
+    /// The entries of the subsection @p subsections (from the top level:
+    /// {"Material"}, {"Material", "J2 plasticity"}) of @p prm, which must
+    /// be at its top level when they are read, for the body @p body of the
+    /// bodies @p all_bodies.
+    BodyEntries(const ParameterHandler         &prm,
+                const std::vector<std::string> &subsections,
+                const std::string              &body,
+                const std::vector<std::string> &all_bodies);
+
+    /// The value of @p entry for this body.
+    std::string
+    get(const std::string &entry) const;
+
+    /// The value of @p entry as a finite number.
+    double
+    get_number(const std::string &entry) const;
+
+    /// The full name of @p entry, for messages ("Material/Yield stress").
+    std::string
+    path_of(const std::string &entry) const
+    {
+      return path + "/" + entry;
+    }
+
+    const std::string &
+    body() const
+    {
+      return body_name;
+    }
+
+  private:
+    const ParameterHandler         &prm;
+    const std::vector<std::string>  subsections;
+    const std::string               path;
+    const std::string               body_name;
+    const std::vector<std::string> &all_bodies;
+  };
+
+
+
+  /**
+   * Isotropic elastic constants of a body: Young's modulus, Poisson's
+   * ratio, in 2D plane stress or plane strain, and the element formulation
+   * that carries the volumetric strain (the standard Q1 element, or the
+   * mean-dilatation B-bar element that does not lock as nu approaches 1/2,
+   * or where plastic flow is isochoric). Owns the stress-strain tensor of
+   * linear elasticity and its split into shear and bulk parts.
+   */
+  template <int dim>
+  class ElasticConstants
+  {
+  public:
+    /// Declares the entries of the subsection "Material" that every law
+    /// reads.
     static void
     declare_parameters(ParameterHandler &prm);
 
     /**
-     * Reads the subsection "Material" for the body @p body of the bodies
-     * @p all_bodies: an entry is one value for every body, or 'body:
-     * value; other body: value'.
+     * Reads the elastic entries of "Material" for one body. @p isochoric:
+     * whether the body's law flows without changing volume (plasticity),
+     * so that Formulation = auto takes the B-bar element for it.
      */
-    LinearElasticMaterial(ParameterHandler               &prm,
-                          const std::string              &body,
-                          const std::vector<std::string> &all_bodies);
+    ElasticConstants(const BodyEntries &entries, const bool isochoric);
 
     /// The fourth-order tensor C with sigma = C : epsilon (of the standard
     /// element).
@@ -87,6 +137,8 @@ namespace FrictionalContact
     /// K: the bulk modulus of dim-dimensional elasticity (lambda + 2 G / dim,
     /// with the plane-stress lambda in 2D plane stress).
     double bulk_modulus;
+    /// The bulk modulus of 3D elasticity, lambda + 2 G / 3 (kappa).
+    double bulk_modulus_3d;
 
     /// Above this Poisson's ratio, 'auto' picks the B-bar element.
     static constexpr double locking_threshold = 0.45;
@@ -95,31 +147,159 @@ namespace FrictionalContact
     SymmetricTensor<4, dim> stiffness;
     /// Whether the user forced the standard element.
     bool standard_forced;
+    /// Whether auto chose the B-bar element for an isochoric flow.
+    bool mean_dilatation_for_flow;
+  };
+
+
+
+  /**
+   * What a material law gives at a quadrature point: the in-plane stress
+   * sigma (dim x dim), the stress conjugate to the volumetric strain of the
+   * element (pi: the mean stress, or for linear elasticity K theta), the
+   * out-of-plane normal stress in 2D, and, if asked, their derivatives with
+   * respect to the strain and the volumetric strain. With theta the trace
+   * of the strain (standard element) the stiffness is d sigma/d epsilon +
+   * d sigma/d theta (x) I; with theta its cell average (B-bar) the element
+   * assembles all four (SolidBody).
+   */
+  template <int dim>
+  struct MaterialResponse
+  {
+    SymmetricTensor<2, dim> stress;
+    double                  volumetric_stress   = 0;
+    double                  out_of_plane_stress = 0;
+    SymmetricTensor<4, dim> stress_by_strain;
+    SymmetricTensor<2, dim> stress_by_volumetric_strain;
+    SymmetricTensor<2, dim> volumetric_stress_by_strain;
+    double                  volumetric_stress_by_volumetric_strain = 0;
+    /// Whether the point flows plastically in this step.
+    bool plastic = false;
+  };
+
+
+
+  /**
+   * A material law: the stress at a quadrature point for a strain and the
+   * element's volumetric strain, given the point's committed history (its
+   * internal variables after the last accepted increment), and the history
+   * that goes with the new strain, which the body commits only when an
+   * increment is accepted. Laws are plugins registered by name
+   * (FRICTIONAL_CONTACT_REGISTER_PLUGIN(MaterialModel, ...)), chosen per
+   * body by <Material/Model>; each reads the elastic entries of "Material"
+   * and its own subsection "Material/<name>". ASPECT's MaterialModel and
+   * step-42's ConstitutiveLaw are the models.
+   */
+  template <int dim>
+  class MaterialModel
+  {
+  public:
+    virtual ~MaterialModel() = default;
+
+    /// Reads the law's entries for one body (the base class reads the
+    /// elastic ones; call it first).
+    virtual void
+    parse_parameters(const BodyEntries &material, const BodyEntries &own);
+
+    /// Whether the stress is linear in the strain without history: the
+    /// body then assembles K once, and the solvers take it as it is.
+    virtual bool
+    is_linear() const = 0;
+
+    /// Whether inelastic flow keeps the volume (Formulation = auto then
+    /// takes the B-bar element).
+    virtual bool
+    flows_isochorically() const
+    {
+      return false;
+    }
+
+    /// How many history values a quadrature point keeps (0: none).
+    virtual unsigned int
+    n_history_values() const
+    {
+      return 0;
+    }
+
+    /**
+     * The response at a point of strain @p strain and volumetric strain
+     * @p volumetric_strain from the committed history @p history (of
+     * n_history_values(); nullptr for none), with the derivatives if
+     * @p with_tangent; the history that goes with it into @p new_history
+     * (if not nullptr).
+     */
+    virtual void
+    evaluate(const SymmetricTensor<2, dim> &strain,
+             const double                   volumetric_strain,
+             const double                  *history,
+             const bool                     with_tangent,
+             MaterialResponse<dim>         &response,
+             double                        *new_history) const = 0;
+
+    /// The equivalent plastic strain of a history (0 without).
+    virtual double
+    equivalent_plastic_strain(const double * /*history*/) const
+    {
+      return 0;
+    }
+
+    /// The plastic strain tensor of a history (3D; zero without).
+    virtual SymmetricTensor<2, 3>
+    plastic_strain(const double * /*history*/) const
+    {
+      return {};
+    }
+
+    /// "E = 1, nu = 0.3" and what the law adds ("J2, yield stress 400").
+    virtual std::string
+    describe() const;
+
+    const ElasticConstants<dim> &
+    elastic() const
+    {
+      return *elastic_constants;
+    }
+
+  protected:
+    std::unique_ptr<ElasticConstants<dim>> elastic_constants;
   };
 
 
 
   /**
    * The material of each body of the scene (bodies are the material ids of
-   * the mesh, named by the geometry), read from the subsection "Material".
-   * Owns one LinearElasticMaterial per body.
+   * the mesh, named by the geometry), read from the subsection "Material":
+   * <Material/Model> names each body's law. Owns one law per body.
    */
   template <int dim>
   class Materials
   {
   public:
+    /// Declares <Material/Model>, the elastic entries and every law's own
+    /// subsection.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
     /// Reads the subsection "Material" for the bodies @p bodies (name ->
     /// material id).
     Materials(ParameterHandler                                &prm,
               const std::map<std::string, types::material_id> &bodies);
 
-    /// The material of the cells with material id @p id.
-    const LinearElasticMaterial<dim> &
+    /// The law of the cells with material id @p id.
+    const MaterialModel<dim> &
     of(const types::material_id id) const;
 
     /// Whether some body uses the B-bar element.
     bool
     any_mean_dilatation() const;
+
+    /// Whether every body is linear elastic.
+    bool
+    all_linear() const;
+
+    /// The largest number of history values of any body's law.
+    unsigned int
+    max_history_values() const;
 
     /// "E = 1, nu = 0.3" for one body, "base: E = ...; block: ..." for more.
     std::string
@@ -130,8 +310,7 @@ namespace FrictionalContact
     locking_warnings() const;
 
   private:
-    std::map<types::material_id, std::unique_ptr<LinearElasticMaterial<dim>>>
-                                                materials;
-    std::map<types::material_id, std::string> names;
+    std::map<types::material_id, std::unique_ptr<MaterialModel<dim>>> materials;
+    std::map<types::material_id, std::string>                         names;
   };
 } // namespace FrictionalContact

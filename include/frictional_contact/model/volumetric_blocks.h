@@ -80,7 +80,7 @@ namespace FrictionalContact
      * @p of_stiffness (K's) otherwise.
      */
     static std::array<double, 2>
-    reduced_lame_parameters(const LinearElasticMaterial<dim> &material,
+    reduced_lame_parameters(const ElasticConstants<dim> &material,
                             const std::array<double, 2>      &of_stiffness);
 
   private:

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <frictional_contact/model/material.h>
+
+namespace FrictionalContact
+{
+  namespace MaterialLaws
+  {
+    /**
+     * Small-strain J2 (von Mises) plasticity with associative flow and
+     * linear isotropic and kinematic (Prager) hardening, integrated by the
+     * radial return and linearised by its consistent tangent (Simo and
+     * Taylor 1985; Simo and Hughes, Computational Inelasticity, box 3.2).
+     * The return works on the 3D stress: in 2D (plane strain only) the
+     * out-of-plane strain is zero and the plastic strain has its
+     * out-of-plane part. With the B-bar element the volumetric strain is the
+     * cell average: the 3D strain is dev(epsilon) + theta/3 I. A point keeps
+     * its plastic strain (6), equivalent plastic strain alpha (1) and back
+     * stress (6). step-42's parameters (sigma_0 bounds |dev sigma|, gamma the
+     * hardening ratio) are accepted as they are: Yield stress measure =
+     * deviator norm and Isotropic hardening ratio.
+     */
+    template <int dim>
+    class J2Plasticity : public MaterialModel<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(const BodyEntries &material, const BodyEntries &own) override;
+
+      bool
+      is_linear() const override
+      {
+        return false;
+      }
+
+      bool
+      flows_isochorically() const override
+      {
+        return true;
+      }
+
+      /// Plastic strain (6), equivalent plastic strain (1), back stress (6).
+      unsigned int
+      n_history_values() const override
+      {
+        return 13;
+      }
+
+      void
+      evaluate(const SymmetricTensor<2, dim> &strain,
+               const double                   volumetric_strain,
+               const double                  *history,
+               const bool                     with_tangent,
+               MaterialResponse<dim>         &response,
+               double                        *new_history) const override;
+
+      double
+      equivalent_plastic_strain(const double *history) const override
+      {
+        return history[6];
+      }
+
+      SymmetricTensor<2, 3>
+      plastic_strain(const double *history) const override;
+
+      std::string
+      describe() const override;
+
+      /// sigma_y: the uniaxial (von Mises) yield stress before hardening.
+      double yield_stress = 0;
+      /// H_iso and H_kin: the slopes of the uniaxial stress against the
+      /// plastic strain that each hardening adds.
+      double isotropic_hardening = 0;
+      double kinematic_hardening = 0;
+    };
+  } // namespace MaterialLaws
+} // namespace FrictionalContact

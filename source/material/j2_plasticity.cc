@@ -1,0 +1,247 @@
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/base/plugins.h>
+#include <frictional_contact/model/j2_plasticity.h>
+
+#include <cmath>
+
+namespace FrictionalContact
+{
+  namespace MaterialLaws
+  {
+    namespace
+    {
+      using Tensor3 = SymmetricTensor<2, 3>;
+
+      /// The symmetric 3D tensor of the history values from @p values[0..5].
+      Tensor3
+      read_tensor(const double *values)
+      {
+        Tensor3 t;
+        for (unsigned int k = 0; k < Tensor3::n_independent_components; ++k)
+          t.access_raw_entry(k) = values[k];
+        return t;
+      }
+
+      void
+      write_tensor(const Tensor3 &t, double *values)
+      {
+        for (unsigned int k = 0; k < Tensor3::n_independent_components; ++k)
+          values[k] = t.access_raw_entry(k);
+      }
+
+      /// The 3D strain of the element: the deviator of the in-plane strain
+      /// @p strain (its out-of-plane part zero in plane strain) and the
+      /// volumetric strain @p theta.
+      template <int dim>
+      Tensor3
+      strain_3d(const SymmetricTensor<2, dim> &strain, const double theta)
+      {
+        Tensor3 embedded;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            embedded[i][j] = strain[i][j];
+        return deviator(embedded) + theta / 3. * unit_symmetric_tensor<3>();
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    J2Plasticity<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Yield stress",
+                        "1",
+                        Patterns::Anything(),
+                        "sigma_y: the stress at which the material first "
+                        "yields, in Yield stress measure (force/area, > 0). "
+                        "Like every entry of Material, one value for all "
+                        "bodies or one per body.");
+      prm.declare_entry("Yield stress measure",
+                        "von Mises",
+                        Patterns::Anything(),
+                        "von Mises: Yield stress is the uniaxial yield stress, "
+                        "sqrt(3/2) |dev sigma| <= sigma_y. deviator norm: "
+                        "|dev sigma| <= Yield stress, step-42's sigma_0.");
+      prm.declare_entry("Isotropic hardening modulus",
+                        "0",
+                        Patterns::Anything(),
+                        "H_iso: the slope that isotropic hardening adds to the "
+                        "uniaxial stress against the plastic strain (force/"
+                        "area, >= 0; 0 with no kinematic hardening is perfect "
+                        "plasticity).");
+      prm.declare_entry("Isotropic hardening ratio",
+                        "",
+                        Patterns::Anything(),
+                        "step-42's gamma, in [0, 1), instead of the modulus: "
+                        "the part of the trial stress beyond the yield surface "
+                        "a single step keeps, H_iso = 3 G gamma / (1 - gamma). "
+                        "Empty: the modulus decides.");
+      prm.declare_entry("Kinematic hardening modulus",
+                        "0",
+                        Patterns::Anything(),
+                        "H_kin: the slope that kinematic (Prager) hardening "
+                        "adds to the uniaxial stress against the plastic "
+                        "strain (force/area, >= 0): the yield surface moves "
+                        "with the back stress (the Bauschinger effect).");
+    }
+
+
+
+    template <int dim>
+    void
+    J2Plasticity<dim>::parse_parameters(const BodyEntries &material,
+                                        const BodyEntries &own)
+    {
+      MaterialModel<dim>::parse_parameters(material, own);
+      const ElasticConstants<dim> &elastic = this->elastic();
+      if (dim == 2 && elastic.plane_stress)
+        Input::fail(material.path_of("Two-dimensional model"), "plane stress",
+                    "plane strain (J2 plasticity in plane stress is not "
+                    "supported here; the body '" + own.body() + "' has it)");
+      const std::string measure = own.get("Yield stress measure");
+      if (measure != "von Mises" && measure != "deviator norm")
+        Input::fail(own.path_of("Yield stress measure"), measure,
+                    "'von Mises' or 'deviator norm'");
+      yield_stress = own.get_number("Yield stress");
+      if (!(yield_stress > 0))
+        Input::fail(own.path_of("Yield stress"), own.get("Yield stress"),
+                    "a positive stress");
+      if (measure == "deviator norm")
+        yield_stress *= std::sqrt(1.5);
+      isotropic_hardening = own.get_number("Isotropic hardening modulus");
+      kinematic_hardening = own.get_number("Kinematic hardening modulus");
+      for (const char *entry : {"Isotropic hardening modulus", "Kinematic hardening modulus"})
+        if (!(own.get_number(entry) >= 0))
+          Input::fail(own.path_of(entry), own.get(entry), "a modulus >= 0");
+      if (const std::string ratio = own.get("Isotropic hardening ratio"); !ratio.empty())
+        {
+          const double gamma = own.get_number("Isotropic hardening ratio");
+          if (!(gamma >= 0 && gamma < 1) || isotropic_hardening != 0)
+            Input::fail(own.path_of("Isotropic hardening ratio"), ratio,
+                        "a ratio in [0, 1), and then no Isotropic hardening "
+                        "modulus");
+          isotropic_hardening = 3. * elastic.shear_modulus * gamma / (1. - gamma);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    J2Plasticity<dim>::evaluate(const SymmetricTensor<2, dim> &strain,
+                                const double                   volumetric_strain,
+                                const double                  *history,
+                                const bool                     with_tangent,
+                                MaterialResponse<dim>         &response,
+                                double                        *new_history) const
+    {
+      const double  mu    = this->elastic().shear_modulus;
+      const double  kappa = this->elastic().bulk_modulus_3d;
+      const Tensor3 I     = unit_symmetric_tensor<3>();
+
+      // The trial state: the strain beyond the committed plastic strain,
+      // elastic.
+      const Tensor3 plastic_before = read_tensor(history);
+      const double  alpha_before   = history[6];
+      const Tensor3 back_before    = read_tensor(history + 7);
+      const Tensor3 total          = strain_3d(strain, volumetric_strain);
+      const Tensor3 trial          = 2. * mu * (deviator(total) - plastic_before);
+      const Tensor3 relative       = trial - back_before;
+      const double  norm           = relative.norm();
+      const double  radius =
+        std::sqrt(2. / 3.) * (yield_stress + isotropic_hardening * alpha_before);
+      const double excess = norm - radius;
+
+      Tensor3 deviatoric = trial;
+      double  step       = 0; // Delta gamma of the radial return
+      Tensor3 n;
+      if (excess > 0)
+        {
+          n    = relative / norm;
+          step = excess / (2. * mu + 2. / 3. * (isotropic_hardening + kinematic_hardening));
+          deviatoric -= 2. * mu * step * n;
+        }
+      response.plastic = step > 0;
+      const Tensor3 stress = deviatoric + kappa * volumetric_strain * I;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          response.stress[i][j] = stress[i][j];
+      response.volumetric_stress   = trace(stress) / 3.;
+      response.out_of_plane_stress = dim == 2 ? stress[2][2] : 0.;
+
+      if (new_history != nullptr)
+        {
+          write_tensor(plastic_before + step * n, new_history);
+          new_history[6] = alpha_before + std::sqrt(2. / 3.) * step;
+          write_tensor(back_before + 2. / 3. * kinematic_hardening * step * n,
+                       new_history + 7);
+        }
+      if (!with_tangent)
+        return;
+
+      // The consistent tangent of the 3D stress (Simo and Hughes, box 3.2),
+      // then by the chain rule through the 3D strain
+      // dev(embed(epsilon)) + theta/3 I.
+      const SymmetricTensor<4, 3> deviatoric_projection =
+        identity_tensor<3>() - outer_product(I, I) / 3.;
+      SymmetricTensor<4, 3> D = kappa * outer_product(I, I);
+      if (step > 0)
+        {
+          const double theta = 1. - 2. * mu * step / norm;
+          const double theta_bar =
+            1. / (1. + (isotropic_hardening + kinematic_hardening) / (3. * mu)) -
+            (1. - theta);
+          D += 2. * mu * theta * deviatoric_projection -
+               2. * mu * theta_bar * outer_product(n, n);
+        }
+      else
+        D += 2. * mu * deviatoric_projection;
+
+      const Tensor3 D_trace = D * I; // D_ijaa
+      const Tensor3 trace_D = I * D; // D_aakl
+      const double  trace_D_trace = I * D_trace;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          {
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = k; l < dim; ++l)
+                response.stress_by_strain[i][j][k][l] =
+                  D[i][j][k][l] - (k == l ? D_trace[i][j] / 3. : 0.);
+            response.stress_by_volumetric_strain[i][j] = D_trace[i][j] / 3.;
+            response.volumetric_stress_by_strain[i][j] =
+              (trace_D[i][j] - (i == j ? trace_D_trace / 3. : 0.)) / 3.;
+          }
+      response.volumetric_stress_by_volumetric_strain = trace_D_trace / 9.;
+    }
+
+
+
+    template <int dim>
+    SymmetricTensor<2, 3>
+    J2Plasticity<dim>::plastic_strain(const double *history) const
+    {
+      return read_tensor(history);
+    }
+
+
+
+    template <int dim>
+    std::string
+    J2Plasticity<dim>::describe() const
+    {
+      return "J2 plasticity (yield stress " + Input::to_text(yield_stress) +
+             ", hardening " + Input::to_text(isotropic_hardening) + " isotropic, " +
+             Input::to_text(kinematic_hardening) + " kinematic), " +
+             this->elastic().describe();
+    }
+
+    FRICTIONAL_CONTACT_REGISTER_PLUGIN(
+      MaterialModel,
+      J2Plasticity,
+      "J2 plasticity",
+      "Small-strain von Mises plasticity with linear isotropic and kinematic "
+      "hardening (radial return, consistent tangent); its entries in "
+      "Material/J2 plasticity.")
+  } // namespace MaterialLaws
+} // namespace FrictionalContact
