@@ -8,15 +8,22 @@ A table in a doc page sits between two markers,
     <!-- end table -->
 
 and TABLES below says how each one is made from its CSV in
-doc/benchmarks/. The bench scripts call write_tables() after they write
-their CSV; `--check` (the test docs/tables_from_csv) fails with the
-name of every table whose text in doc/ differs from what its CSV makes,
-so that a number in those tables cannot drift from the measurement.
+doc/benchmarks/. Numbers quoted in prose sit between inline markers,
+
+    ... went to <!-- quote: multigrid-1.6m -->19 and 189<!-- end quote --> ...
+
+and QUOTES says how each text is made (the page may wrap it over lines:
+the check compares the words). The pages are README.md, bench/README.md
+and every .md under doc/. The bench scripts call write_tables() after
+they write their CSV; `--check` (the test docs/tables_from_csv) fails with
+the name of every table or quote whose text differs from what its CSV
+makes, so that a number in them cannot drift from the measurement.
 
 usage: bench/doc_tables.py [--check] [--root .]
 """
 import argparse
 import csv
+import math
 import os
 import re
 import sys
@@ -275,44 +282,160 @@ TABLES = {
     "nearly-incompressible-example2": example2_newton,
 }
 
-MARKED = re.compile(r"(<!-- table: ([a-z0-9-]+) -->\n)(.*?)\n?(<!-- end table -->)", re.S)
+
+# -- quotes: numbers of the CSVs in a sentence ------------------------------
+
+ERROR_COLUMNS = ["radial_displacement_error", "radial_stress_error",
+                 "hoop_stress_error", "radius_error", "peak_pressure_error",
+                 "profile_error"]
+
+
+def nearly_incompressible_errors(root):
+    """The standard element's and the B-bar element's errors (in %) at
+    nu = 0.4999 over Lame's sphere and the Hertz scenes
+    (doc/robustness.md)."""
+    table = [r for r in rows(root, "nearly-incompressible.csv")
+             if r["nu"] == "0.4999" and r["converged"] == "1"]
+
+    def errors(variant, columns, cases=None):
+        return [float(r[c]) for r in table for c in columns
+                if r["variant"] == variant and r[c]
+                and (cases is None or r["case"] in cases)]
+
+    radius = [float(r["radius_error"]) for case in ("hertz_2d", "hertz_3d")
+              for r in table if r["case"] == case and r["variant"] == "standard"
+              and r["radius_error"]]
+    others = errors("standard", [c for c in ERROR_COLUMNS if c != "radius_error"])
+    profile_3d = errors("B-bar mixed", ["profile_error"], ("hertz_3d",))
+    b_bar = [float(r[c]) for r in table for c in ERROR_COLUMNS
+             if r["variant"] == "B-bar mixed" and r[c]
+             and not (r["case"] == "hertz_3d" and c == "profile_error")]
+    return (f"{' and '.join(f'{e:.0f}' for e in radius)} % in the contact radius "
+            f"of the Hertz scenes (2D, 3D) and {min(others):.0f} to "
+            f"{max(others):.0f} % in Lame's displacements and stresses and in "
+            f"Hertz's pressures, and the B-bar element's below "
+            f"{math.ceil(max(b_bar)):.0f} % ({max(profile_3d):.0f} % of p0 in the "
+            f"nodal pressure profile of the 3D ball)")
+
+
+def multigrid_row(root, n_y, ranks, path):
+    for r in rows(root, "multigrid.csv"):
+        if r["n_y"] == n_y and r["ranks"] == ranks and r["path"] == path \
+                and r["converged"] == "1":
+            return r
+    raise KeyError(f"multigrid.csv has no converged row N_Y = {n_y}, "
+                   f"{ranks} ranks, '{path}'")
+
+
+def multigrid_largest_ml(root):
+    """The multigrid with K matrix-free at d = 1.6M on 2 ranks: Newton
+    steps and Krylov iterations (doc/algorithm.md)."""
+    r = multigrid_row(root, "64", "2", "geometric multigrid, K matrix-free")
+    return f"{r['newton_iterations']} and {r['contact_krylov_iterations']}"
+
+
+def multigrid_against_ml(root):
+    """The same run against ML's (doc/performance.md)."""
+    mg = multigrid_row(root, "64", "2", "geometric multigrid, K matrix-free")
+    ml = multigrid_row(root, "64", "2", "amg")
+    mg_s, ml_s = float(mg["contact_solve_s"]), float(ml["contact_solve_s"])
+    return (f"{mg_s / ml_s:.2f} times at d = 1.6M ({mg_s:.0f} s against "
+            f"{ml_s:.0f} s, {mg['newton_iterations']} Newton steps and "
+            f"{mg['contact_krylov_iterations']} Krylov iterations against "
+            f"{ml['newton_iterations']} and {ml['contact_krylov_iterations']})")
+
+
+QUOTES = {
+    "nearly-incompressible-errors": nearly_incompressible_errors,
+    "multigrid-1.6m": multigrid_largest_ml,
+    "multigrid-1.6m-against-ml": multigrid_against_ml,
+}
+
+MARKED = re.compile(r"(<!-- table: ([a-z0-9.-]+) -->\n)(.*?)\n?(<!-- end table -->)", re.S)
+QUOTED = re.compile(r"(<!-- quote: ([a-z0-9.-]+) -->)(.*?)(<!-- end quote -->)", re.S)
 
 
 def pages(root):
-    folder = os.path.join(root, "doc")
-    return [os.path.join(folder, name) for name in sorted(os.listdir(folder))
-            if name.endswith(".md")]
+    """README.md, bench/README.md and every Markdown page under doc/."""
+    found = [os.path.join(root, p) for p in ("README.md", os.path.join("bench", "README.md"))
+             if os.path.isfile(os.path.join(root, p))]
+    for folder, subfolders, names in os.walk(os.path.join(root, "doc")):
+        subfolders.sort()
+        found += [os.path.join(folder, name) for name in sorted(names)
+                  if name.endswith(".md")]
+    return found
 
 
-def write_tables(root=ROOT, check=False):
-    """Rewrites (or with check, compares) every marked table; returns the
-    names of the tables that differ, and of markers with no known table."""
-    differing = []
+def words(text):
+    return " ".join(text.split())
+
+
+def differences(root=ROOT, check=True):
+    """Rewrites (or with check, compares) every marked table and quote;
+    returns (page, line, what) for each one that differs, each marker with
+    no known table or quote, and each quote marker left open."""
+    found = []
     for page in pages(root):
         with open(page) as f:
             text = f.read()
+        relative = os.path.relpath(page, root)
 
-        def replace(match):
+        def line_of(match):
+            return text.count("\n", 0, match.start()) + 1
+
+        def made(kind, known, match):
             name = match.group(2)
-            if name not in TABLES:
-                differing.append(f"{os.path.relpath(page, root)}: unknown table '{name}'")
-                return match.group(0)
-            made = TABLES[name](root)
-            if made != match.group(3):
-                differing.append(f"{os.path.relpath(page, root)}: table '{name}'")
-            return match.group(1) + made + "\n" + match.group(4)
+            if name not in known:
+                found.append((relative, line_of(match), f"unknown {kind} '{name}'"))
+                return None
+            try:
+                return known[name](root)
+            except (OSError, KeyError, ValueError) as error:
+                found.append((relative, line_of(match),
+                              f"{kind} '{name}' cannot be made from its CSV: {error}"))
+                return None
 
-        new_text = MARKED.sub(replace, text)
+        def replace_table(match):
+            table = made("table", TABLES, match)
+            if table is None:
+                return match.group(0)
+            if table != match.group(3):
+                found.append((relative, line_of(match), f"table '{match.group(2)}'"))
+            return match.group(1) + table + "\n" + match.group(4)
+
+        def replace_quote(match):
+            quote = made("quote", QUOTES, match)
+            if quote is None:
+                return match.group(0)
+            if words(quote) != words(match.group(3)):
+                found.append((relative, line_of(match),
+                              f"quote '{match.group(2)}' says '{words(match.group(3))}', "
+                              f"its CSV makes '{quote}'"))
+                return match.group(1) + quote + match.group(4)
+            return match.group(0)
+
+        new_text = QUOTED.sub(replace_quote, MARKED.sub(replace_table, text))
+        for match in re.finditer(r"<!-- quote: [^>]*-->", text):
+            if not QUOTED.match(text, match.start()) or \
+                    "<!-- quote:" in QUOTED.match(text, match.start()).group(3):
+                found.append((relative, line_of(match),
+                              "a quote marker without its <!-- end quote -->"))
         if not check and new_text != text:
             with open(page, "w") as f:
                 f.write(new_text)
-    return differing
+    return found
+
+
+def write_tables(root=ROOT, check=False):
+    """Rewrites (or with check, compares) every marked table and quote;
+    returns 'page: what' for each that differs (see differences())."""
+    return [f"{page}: {what}" for page, _, what in differences(root, check)]
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true",
-                        help="only compare; exit 1 if a table differs from its CSV")
+                        help="only compare; exit 1 if a table or quote differs from its CSV")
     parser.add_argument("--root", default=ROOT, help="the top of the repository")
     args = parser.parse_args()
     differing = write_tables(args.root, args.check)

@@ -47,3 +47,13 @@ add_test(NAME docs/parameter_reference
 # makes of those CSVs.
 add_test(NAME docs/tables_from_csv
   COMMAND ${PYTHON3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/bench/doc_tables.py --check)
+
+# Numbers in README.md and doc/ that drift (the suite's size and time,
+# issue numbers, bench figures typed by hand, unlisted CSVs and plugins,
+# tolerances and tmpfs sizes that the tests do not use): check_doc_numbers.py,
+# and its self-test shows that each check finds what it looks for.
+add_test(NAME docs/stale_numbers
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_numbers.py
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:contact>)
+add_test(NAME docs/stale_numbers_self_test
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_numbers.py --self-test)

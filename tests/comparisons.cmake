@@ -468,3 +468,15 @@ foreach(_case "2d;;" "3d;.mpirun=2;.mpirun=2")
     ${CMAKE_CURRENT_BINARY_DIR}/two_blocks_stacked_${_d}${_b}/output-two_blocks_stacked_${_d}/statistics
     1e-10)
 endforeach()
+
+# J2 plasticity in uniaxial stress, loaded past yield, unloaded and loaded in
+# compression: the exact stress-strain curve in every cell to 1e-10 of the
+# yield stress, with isotropic and with kinematic hardening
+# (check_uniaxial.py).
+foreach(_test j2_uniaxial_isotropic j2_uniaxial_kinematic.mpirun=2)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  add_test(NAME ${_test}.exact
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_uniaxial.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 1e-10)
+  set_tests_properties(${_test}.exact PROPERTIES FIXTURES_REQUIRED ${_test})
+endforeach()

@@ -154,6 +154,7 @@ namespace FrictionalContact
     const parallel::distributed::Triangulation<dim> &triangulation,
     const DoFHandler<dim>                           &dof_handler,
     const std::vector<const Vector *>               &vectors,
+    QuadratureHistory<dim>                          &history,
     const std::string                               &state,
     const std::string                               &scene) const
   {
@@ -161,10 +162,12 @@ namespace FrictionalContact
     // p4est aborts the program when its save fails: the space it needs is
     // reserved first, and a reservation that fails is a WriteError that
     // leaves the last checkpoint as it was.
-    const std::uintmax_t bytes = expected_size(triangulation,
-                                               dof_handler,
-                                               vectors.size(),
-                                               state.size() + scene.size());
+    const std::uintmax_t bytes = expected_size(
+      triangulation,
+      dof_handler,
+      vectors.size(),
+      state.size() + scene.size() +
+        Utilities::MPI::sum<std::uintmax_t>(history.size_in_bytes(), comm));
     run_on_root(comm, [&]() {
       std::filesystem::remove_all(temporary);
       std::filesystem::create_directories(temporary);
@@ -182,7 +185,12 @@ namespace FrictionalContact
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     transfer.prepare_for_serialization(vectors);
+    // Attached as deal.II's SolutionTransfer attaches its data: the mesh
+    // saves what is attached to it and is otherwise unchanged.
+    auto &mesh = const_cast<parallel::distributed::Triangulation<dim> &>(triangulation);
+    history.attach(mesh);
     triangulation.save(temporary + mesh_file);
+    history.clear_attachment();
     run_on_root(comm, [&]() { write_file_atomically(temporary + state_file, state); });
 
     run_on_root(comm, [&]() {

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/increment_response.h>
 #include <frictional_contact/driver/increment_solver.h>
 #include <frictional_contact/solvers/stiffness_spectrum.h>
 
@@ -60,6 +61,14 @@ namespace FrictionalContact
         "' against rigid-body motion: set <Contact solver/Method> = "
         "semismooth Newton, which solves such scenes, or hold the body with "
         "<Boundary conditions/Fixed boundaries>");
+    if (model.nonlinear() && !solver.method->handles_nonlinear_laws())
+      throw InputError(
+        "<Contact solver/Method> = " + solver.method_name +
+        " is a method for linear elasticity (mu_pi and the second-order cone "
+        "program of the paper), but a body has a nonlinear law (<Material/"
+        "Model> = " + "J2 plasticity): set <Contact solver/Method> = "
+        "semismooth Newton, which solves the internal force's Newton "
+        "equations with the contact conditions");
     if (held.size() > ContactHeldBodies::max_bodies)
       throw InputError("only contact holds " + std::to_string(held.size()) +
                        " bodies; at most " +
@@ -239,7 +248,7 @@ namespace FrictionalContact
 
   template <int dim>
   IncrementOutcome<dim>
-  IncrementSolver<dim>::solve(const Model<dim>  &model,
+  IncrementSolver<dim>::solve(Model<dim>        &model,
                               const State<dim>  &state,
                               const unsigned int increment,
                               const double      t_start,
@@ -265,8 +274,6 @@ namespace FrictionalContact
     outcome.load = std::make_unique<TrilinosWrappers::MPI::Vector>(
       body.make_vector());
     TrilinosWrappers::MPI::Vector &load = *outcome.load;
-    body.internal_force(start, load);
-    load.sadd(-1., load_factor, body.load_vector());
     if (contact.has_pairs())
       {
         // The contact pairs were updated to this configuration: the basis
@@ -277,6 +284,21 @@ namespace FrictionalContact
             mortar_cycle.reset();
           }
         mortar = std::make_shared<MortarBasis<dim>>(body, contact);
+      }
+    // p - f_int(u_0): for linear laws p - K u_0; nonlinear ones evaluate
+    // f_int(u_0) and the tangent there.
+    if (model.nonlinear())
+      {
+        TimerOutput::Scope scope(timer, "Assembly");
+        outcome.response =
+          std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start);
+        load = outcome.response->start_force();
+      }
+    else
+      body.internal_force(start, load);
+    load.sadd(-1., load_factor, body.load_vector());
+    if (contact.has_pairs())
+      {
         if (preconditioner_basis)
           // The AMG of the first increment on this mesh still serves: the
           // mortar rows change little from one increment to the next
@@ -285,11 +307,15 @@ namespace FrictionalContact
                                        mortar->volumetric_split());
         else
           {
+            // The preconditioners from K_w as the basis was made (for a
+            // nonlinear law the solves then take its tangent).
             linear_solver.release();
-            linear_solver.initialize(mortar->stiffness(),
+            linear_solver.initialize(mortar->initial_stiffness(),
                                      mortar->modes_to_w(body.rigid_body_modes()),
                                      0.,
                                      mortar->volumetric_split());
+            linear_solver.replace_matrix(mortar->stiffness(),
+                                         mortar->volumetric_split());
             preconditioner_basis = mortar;
           }
         if (geometric)
@@ -307,7 +333,10 @@ namespace FrictionalContact
 
     outcome.du_solved       = body.make_vector();
     SolveStatistics &result = outcome.statistics;
-    if (!contact.active() || elastic_trial())
+    // Without contact, a linear body's increment is one elastic solve; a
+    // nonlinear one's takes Newton's method like a contact problem.
+    const bool newton_without_contact = !contact.active() && model.nonlinear();
+    if ((!contact.active() && !model.nonlinear()) || elastic_trial())
       {
         TimerOutput::Scope scope(timer, "Elastic solve");
         const Timer        wall;
@@ -326,7 +355,7 @@ namespace FrictionalContact
                             ": the elastic solve gave a displacement that is "
                             "not finite");
       }
-    if (contact.active())
+    if (contact.active() || newton_without_contact)
       {
         outcome.problem =
           make_problem(model,
@@ -334,10 +363,12 @@ namespace FrictionalContact
                        start,
                        contact.obstacle_displacement(t_end) -
                          contact.obstacle_displacement(t_start));
+        outcome.problem->nonlinear = outcome.response.get();
         solve_contact(model, state, start, outcome, record_history, timer);
         if (!result.converged)
           return outcome;
-        outcome.results = contact_results(contact, state, outcome);
+        if (contact.active())
+          outcome.results = contact_results(contact, state, outcome);
       }
     else
       {

@@ -339,6 +339,7 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       state.contact_forces[j] = contact.to_cartesian(j, outcome.reactions[j]);
     state.u += outcome.du;
+    model.commit(state.u);
 
     ContactSummary<dim> summary = summarize(
       contact, outcome.results, state.contact_forces, mpi_communicator);
@@ -434,6 +435,7 @@ namespace FrictionalContact
     checkpoint.save(model.mesh(),
                     body.get_dof_handler(),
                     {&u_ghosted, &forces_ghosted},
+                    model.get_history(),
                     text.str(),
                     parameters_as_run);
     last_checkpoint = n_done;
@@ -449,6 +451,7 @@ namespace FrictionalContact
     TrilinosWrappers::MPI::Vector forces  = model.get_body().make_vector();
     std::vector<TrilinosWrappers::MPI::Vector *> vectors = {&state.u, &forces};
     checkpoint.load_vectors(model.get_body().get_dof_handler(), vectors);
+    model.load_history();
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       state.contact_forces[j] = contact.nodal_value(j, forces);
 

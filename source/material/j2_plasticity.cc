@@ -162,7 +162,8 @@ namespace FrictionalContact
           step = excess / (2. * mu + 2. / 3. * (isotropic_hardening + kinematic_hardening));
           deviatoric -= 2. * mu * step * n;
         }
-      response.plastic = step > 0;
+      response.plastic  = step > 0;
+      response.at_yield = excess > -1e-10 * radius;
       const Tensor3 stress = deviatoric + kappa * volumetric_strain * I;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)

@@ -37,6 +37,7 @@ namespace FrictionalContact
         response.volumetric_stress   = elastic.bulk_modulus * volumetric_strain;
         response.out_of_plane_stress = elastic.out_of_plane_stress(response.stress);
         response.plastic             = false;
+        response.at_yield            = false;
         if (!with_tangent)
           return;
         // sigma = 2 G (epsilon - tr(epsilon) I / dim) + K theta I.

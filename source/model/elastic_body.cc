@@ -116,7 +116,10 @@ namespace FrictionalContact
     sparsity.compress();
     stiffness_matrix.reinit(sparsity);
     stiffness_operator = std::make_unique<AssembledStiffness>(stiffness_matrix);
-    volumetric.setup(dof_handler, constraints, stiffness_matrix);
+    // The split of K holds for linear laws only: a tangent changes at each
+    // Newton step.
+    if (materials.all_linear())
+      volumetric.setup(dof_handler, constraints, stiffness_matrix);
   }
 
 
@@ -366,7 +369,29 @@ namespace FrictionalContact
     // The force at a hanging node acts on the nodes it hangs from.
     Vector residual(owned_dofs, mpi_communicator);
     element_forces(u, load_factor, hanging_node_constraints, residual);
+    return sum_at_fixed_dofs(residual);
+  }
 
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticBody<dim>::support_reaction_of(const Vector &internal_force,
+                                        const double  load_factor) const
+  {
+    // The load's part: element_forces() of a zero displacement, -p.
+    Vector residual(owned_dofs, mpi_communicator);
+    element_forces(make_ghosted_vector(), load_factor, hanging_node_constraints, residual);
+    residual += internal_force;
+    return sum_at_fixed_dofs(residual);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticBody<dim>::sum_at_fixed_dofs(const Vector &residual) const
+  {
     // Only the dofs held by a fixed boundary carry a support reaction.
     Tensor<1, dim> reaction_here;
     for (unsigned int c = 0; c < dim; ++c)

@@ -98,6 +98,7 @@ namespace FrictionalContact
     boundary_names = BoundaryNames(geometry->boundary_names(),
                                    boundary_ids_in(*triangulation));
     materials      = std::make_unique<Materials<dim>>(prm, bodies);
+    history = std::make_unique<QuadratureHistory<dim>>(*materials, QGauss<dim>(2));
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(prm, boundary_names);
     contact = std::make_unique<ContactOperator<dim>>(prm, boundary_names);
@@ -111,6 +112,12 @@ namespace FrictionalContact
                                               *boundary_conditions,
                                               bodies,
                                               matrix_free);
+    response = std::make_unique<BodyResponse<dim>>(*body, *materials, *history);
+    if (nonlinear() && (matrix_free || wants_mesh_levels(prm)))
+      throw InputError("<Linear solver/Preconditioner> = geometric multigrid "
+                       "(and Matrix-free stiffness) does not serve bodies of "
+                       "nonlinear laws (<Material/Model> = J2 plasticity) yet: "
+                       "set the preconditioner to auto or AMG");
     if (matrix_free && materials->any_mean_dilatation())
       throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
                        "B-bar bodies (nearly incompressible materials) yet: "
@@ -149,8 +156,9 @@ namespace FrictionalContact
     const bool automatic = prm.get("Preconditioner") == "auto" &&
                            !prm.get_bool("Matrix-free stiffness");
     prm.leave_subsection();
-    // B-bar bodies and contact pairs need the assembled K.
-    if (!automatic || materials->any_mean_dilatation() || contact->has_pairs())
+    // B-bar bodies, contact pairs and nonlinear laws need the assembled K.
+    if (!automatic || materials->any_mean_dilatation() || contact->has_pairs() ||
+        nonlinear())
       return false;
     const double n_cells = refinement->cells_after_global_refinement(
       *triangulation, geometry->n_built_in_refinements());
@@ -188,6 +196,9 @@ namespace FrictionalContact
     else
       refinement->refine(*triangulation, geometry->n_built_in_refinements());
     make_dofs_and_candidates();
+    // A checkpoint's history comes with its vectors (Simulator).
+    if (!load_mesh)
+      history->reset(*triangulation);
   }
 
 
@@ -213,6 +224,7 @@ namespace FrictionalContact
       body->get_dof_handler());
     triangulation->prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(old_fields);
+    history->attach(*triangulation);
     const Tensor<1, dim> obstacle = contact->obstacle_position();
     MeshRefinement<dim>::restore_hanging_vertices(*triangulation);
     triangulation->execute_coarsening_and_refinement();
@@ -224,6 +236,7 @@ namespace FrictionalContact
     for (Vector *field : new_fields)
       *field = body->make_vector();
     transfer.interpolate(new_fields);
+    history->unpack(*triangulation);
     // Only the hanging nodes: the full constraints also hold the prescribed
     // dofs, at zero, while a field such as u has their values there.
     for (Vector *field : fields)
@@ -281,6 +294,46 @@ namespace FrictionalContact
           "'set Fixed boundaries = " +
           (all.size() == 1 ? std::string("left") : name + " left") + "'");
       }
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  Model<dim>::update_tangent(const TrilinosWrappers::MPI::Vector &u_ghosted,
+                             TrilinosWrappers::MPI::Vector       &force)
+  {
+    return response->internal_force(u_ghosted,
+                                     body->get_constraints(),
+                                     force,
+                                     &body->matrix_for_tangent());
+  }
+
+
+
+  template <int dim>
+  void
+  Model<dim>::commit(const TrilinosWrappers::MPI::Vector &u)
+  {
+    if (!history->active())
+      return;
+    TrilinosWrappers::MPI::Vector u_ghosted = body->make_ghosted_vector();
+    u_ghosted                               = u;
+    response->commit(u_ghosted);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Model<dim>::support_reaction(const TrilinosWrappers::MPI::Vector &u_ghosted,
+                               const double                         load_factor) const
+  {
+    if (!nonlinear())
+      return body->support_reaction(u_ghosted, load_factor);
+    TrilinosWrappers::MPI::Vector force = body->make_vector();
+    response->internal_force(u_ghosted, body->get_hanging_node_constraints(), force, nullptr);
+    return body->support_reaction_of(force, load_factor);
   }
 
 

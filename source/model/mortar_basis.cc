@@ -56,6 +56,18 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  MortarBasis<dim>::update_tangent(const TrilinosWrappers::SparseMatrix &tangent)
+  {
+    TrilinosWrappers::SparseMatrix product;
+    tangent.mmult(product, basis);
+    basis.Tmmult(transformed_tangent, product);
+    has_tangent = true;
+  }
+
+
+
+  template <int dim>
+  void
   MortarBasis<dim>::force_to_w(const Vector &force, Vector &force_w) const
   {
     basis.Tvmult(force_w, force);

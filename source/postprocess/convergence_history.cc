@@ -71,7 +71,7 @@ namespace FrictionalContact
                << "the contact solver.\n"
                << "# iteration seconds force_balance complementarity "
                   "penetration step linear_iterations active_set_changes "
-                  "forcing_term\n"
+                  "forcing_term active_nodes plastic_points\n"
                << std::setprecision(9);
           for (const HistoryRow &row : history)
             text << row.iteration << ' ' << row.seconds << ' '
@@ -79,7 +79,8 @@ namespace FrictionalContact
                  << row.residuals.complementarity << ' '
                  << row.residuals.penetration << ' ' << row.step << ' '
                  << row.linear_iterations << ' ' << row.active_set_changes
-                 << ' ' << row.forcing_term << '\n';
+                 << ' ' << row.forcing_term << ' ' << row.active_nodes << ' '
+                 << row.plastic_points << '\n';
           std::ostringstream name;
           name << directory << "/history-" << std::setw(5) << std::setfill('0')
                << result.increment << ".txt";

@@ -23,55 +23,6 @@ namespace FrictionalContact
 {
   namespace
   {
-    /// The von Mises equivalent stress of the displacement field (in 2D
-    /// with the out-of-plane stress of plane stress or plane strain), with
-    /// the volumetric strain of the element: the trace at the point, or
-    /// for the B-bar element the cell's mean dilatation.
-    template <int dim>
-    class VonMisesStress : public DataPostprocessorScalar<dim>
-    {
-    public:
-      VonMisesStress(const Materials<dim>             &materials,
-                     const dealii::Vector<double>     &mean_dilatation)
-        : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
-        , materials(materials)
-        , mean_dilatation(mean_dilatation)
-      {}
-
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<dealii::Vector<double>>        &computed) const override
-      {
-        const auto cell = inputs.template get_cell<dim>();
-        const ElasticConstants<dim> &material =
-          materials.of(cell->material_id()).elastic();
-        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-          {
-            Tensor<2, dim> gradient;
-            for (unsigned int d = 0; d < dim; ++d)
-              gradient[d] = inputs.solution_gradients[q][d];
-            const SymmetricTensor<2, dim> strain = symmetrize(gradient);
-            const double                  theta =
-              material.mean_dilatation ?
-                                 mean_dilatation[cell->active_cell_index()] :
-                                 trace(strain);
-            const SymmetricTensor<2, dim> stress = material.stress(strain, theta);
-            SymmetricTensor<2, 3> s;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                s[i][j] = stress[i][j];
-            if (dim == 2)
-              s[2][2] = material.out_of_plane_stress(stress);
-            computed[q](0) = std::sqrt(1.5 * deviator(s) * deviator(s));
-          }
-      }
-
-    private:
-      const Materials<dim>             &materials;
-      const dealii::Vector<double>     &mean_dilatation;
-    };
-
     const char *state_name(const ContactState state)
     {
       switch (state)
@@ -161,14 +112,14 @@ namespace FrictionalContact
                       result.time,
                       model.get_body(),
                       model.get_contact(),
-                      model.get_materials(),
+                      model.get_response(),
                       result.state.u,
                       result.outcome.results);
     if (write_csv)
       write_csv_files(result.increment,
                       model.get_body(),
                       model.get_contact(),
-                      model.get_materials(),
+                      model.get_response(),
                       result.state.u,
                       result.outcome.results);
     return {};
@@ -223,7 +174,7 @@ namespace FrictionalContact
                                      const double                      time,
                                      const ElasticBody<dim>           &body,
                                      const ContactOperator<dim>       &contact,
-                                     const Materials<dim>              &materials,
+                                     const BodyResponse<dim>           &response,
                                      const Vector                     &u,
                                      const ContactResults<dim>        &results)
   {
@@ -316,24 +267,37 @@ namespace FrictionalContact
                                                       "contact_reaction_increment"),
                              DataOut<dim>::type_dof_data,
                              vector_field);
-    const dealii::Vector<double> mean_dilatation =
-      body.mean_volumetric_strain(u_ghosted);
-    const VonMisesStress<dim> von_mises(materials, mean_dilatation);
-    data_out.add_data_vector(u_ghosted, von_mises);
-    // The mean stress of each cell, sigma_m = K theta_bar (tension
-    // positive; its negative is the pressure of an incompressible body).
-    // and the body (material id) of each cell.
-    dealii::Vector<float> mean_stress(triangulation.n_active_cells());
-    dealii::Vector<float> body_id(triangulation.n_active_cells());
+    // Cell data: the averages over each cell's quadrature points of the
+    // stress (von Mises, mean stress: tension positive, its negative the
+    // pressure of an incompressible body) and of the plastic state, and
+    // the body (material id).
+    const std::vector<CellState<dim>> states = response.cell_states(u_ghosted);
+    const unsigned int n_cells = triangulation.n_active_cells();
+    dealii::Vector<float> von_mises(n_cells), mean_stress(n_cells),
+      plastic_strain(n_cells), yield_state(n_cells), body_id(n_cells);
+    std::vector<dealii::Vector<float>> plastic_tensor(6, dealii::Vector<float>(n_cells));
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const unsigned int c = cell->active_cell_index();
-          mean_stress[c] =
-            materials.of(cell->material_id()).elastic().mean_stress(mean_dilatation[c]);
-          body_id[c] = cell->material_id();
+          const unsigned int    c     = cell->active_cell_index();
+          const CellState<dim> &state = states[c];
+          von_mises[c]      = state.von_mises_stress;
+          mean_stress[c]    = state.mean_stress;
+          plastic_strain[c] = state.equivalent_plastic_strain;
+          yield_state[c]    = state.yield_state;
+          body_id[c]        = cell->material_id();
+          for (unsigned int k = 0; k < 6; ++k)
+            plastic_tensor[k][c] = state.plastic_strain.access_raw_entry(k);
         }
+    data_out.add_data_vector(von_mises, "von_mises_stress");
     data_out.add_data_vector(mean_stress, "mean_stress");
+    data_out.add_data_vector(plastic_strain, "equivalent_plastic_strain");
+    // SymmetricTensor<2, 3>'s order of independent components.
+    const char *component[6] = {"xx", "yy", "zz", "xy", "xz", "yz"};
+    for (unsigned int k = 0; k < 6; ++k)
+      data_out.add_data_vector(plastic_tensor[k],
+                               std::string("plastic_strain_") + component[k]);
+    data_out.add_data_vector(yield_state, "yield_state");
     data_out.add_data_vector(body_id, "body");
     data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
     data_out.add_data_vector(scalar_dof_handler,
@@ -409,7 +373,7 @@ namespace FrictionalContact
   OutputWriter<dim>::write_csv_files(const unsigned int          increment,
                                      const ElasticBody<dim>     &body,
                                      const ContactOperator<dim> &contact,
-                                     const Materials<dim>              &materials,
+                                     const BodyResponse<dim>           &response,
                                      const Vector               &u,
                                      const ContactResults<dim>  &results) const
   {
@@ -483,7 +447,7 @@ namespace FrictionalContact
                        comm);
 
     std::string stress_header;
-    rows = Postprocess::cell_stress_rows(body, materials, u, stress_header);
+    rows = Postprocess::cell_stress_rows(body, response, u, stress_header);
     Postprocess::write_sorted_table(
       directory + "/stress-" + suffix.str(), stress_header, rows, dim, comm);
   }

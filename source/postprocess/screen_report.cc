@@ -108,7 +108,7 @@ namespace FrictionalContact
       TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
       u_ghosted                               = result.state.u;
       const Tensor<1, dim> support =
-        body.support_reaction(u_ghosted, result.load_factor);
+        model.support_reaction(u_ghosted, result.load_factor);
       const Tensor<1, dim> load = result.load_factor * body.total_load();
       const types::global_dof_index c = model.get_contact().n_candidates();
       const unsigned int free  = summary.count(ContactState::free);

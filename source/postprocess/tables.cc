@@ -46,7 +46,7 @@ namespace FrictionalContact
     template <int dim>
     std::vector<std::string>
     cell_stress_rows(const ElasticBody<dim>              &body,
-                     const Materials<dim>                &materials,
+                     const BodyResponse<dim>             &response,
                      const TrilinosWrappers::MPI::Vector &u,
                      std::string                         &header)
     {
@@ -61,44 +61,46 @@ namespace FrictionalContact
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i + 1; j < dim; ++j)
           header += std::string(",s") + axis[i] + axis[j];
-      header += ",mean_stress";
+      header += ",mean_stress,von_mises_stress,equivalent_plastic_strain";
+      for (unsigned int i = 0; i < 3; ++i)
+        header += std::string(",ep") + axis[i] + axis[i];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i + 1; j < 3; ++j)
+          header += std::string(",ep") + axis[i] + axis[j];
+      header += ",yield_state";
 
       TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
       u_ghosted                               = u;
-      const dealii::Vector<double> theta_bar =
-        body.mean_volumetric_strain(u_ghosted);
+      const std::vector<CellState<dim>> states = response.cell_states(u_ghosted);
       const DoFHandler<dim> &dof_handler = body.get_dof_handler();
       QMidpoint<dim>         centre;
-      FEValues<dim>          fe_values(dof_handler.get_fe(),
-                              centre,
-                              update_gradients | update_quadrature_points);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<SymmetricTensor<2, dim>> strain(1);
-      std::vector<std::string>             rows;
+      FEValues<dim> fe_values(dof_handler.get_fe(), centre, update_quadrature_points);
+      std::vector<std::string> rows;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
-                                                                     strain);
-            const double theta = theta_bar[cell->active_cell_index()];
-            const ElasticConstants<dim> &material =
-              materials.of(cell->material_id()).elastic();
-            const SymmetricTensor<2, dim> stress = material.stress(
-              strain[0], material.mean_dilatation ? theta : trace(strain[0]));
-            std::ostringstream row;
+            const CellState<dim> &state = states[cell->active_cell_index()];
+            std::ostringstream    row;
             row << std::setprecision(17);
             const Point<dim> &x = fe_values.quadrature_point(0);
             for (unsigned int d = 0; d < dim; ++d)
               row << (d == 0 ? "" : ",") << x[d];
             for (unsigned int i = 0; i < dim; ++i)
-              row << ',' << stress[i][i];
+              row << ',' << state.stress[i][i];
             if (dim == 2)
-              row << ',' << material.out_of_plane_stress(stress);
+              row << ',' << state.out_of_plane_stress;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = i + 1; j < dim; ++j)
-                row << ',' << stress[i][j];
-            row << ',' << material.mean_stress(theta);
+                row << ',' << state.stress[i][j];
+            row << ',' << state.mean_stress << ',' << state.von_mises_stress << ','
+                << state.equivalent_plastic_strain;
+            for (unsigned int i = 0; i < 3; ++i)
+              row << ',' << state.plastic_strain[i][i];
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = i + 1; j < 3; ++j)
+                row << ',' << state.plastic_strain[i][j];
+            row << ',' << state.yield_state;
             rows.push_back(row.str());
           }
       return rows;
@@ -106,12 +108,12 @@ namespace FrictionalContact
 
     template std::vector<std::string>
     cell_stress_rows(const ElasticBody<2> &,
-                     const Materials<2> &,
+                     const BodyResponse<2> &,
                      const TrilinosWrappers::MPI::Vector &,
                      std::string &);
     template std::vector<std::string>
     cell_stress_rows(const ElasticBody<3> &,
-                     const Materials<3> &,
+                     const BodyResponse<3> &,
                      const TrilinosWrappers::MPI::Vector &,
                      std::string &);
   } // namespace Postprocess

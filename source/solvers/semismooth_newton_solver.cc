@@ -6,6 +6,7 @@
 #include <frictional_contact/solvers/progress_rules.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace FrictionalContact
@@ -227,7 +228,9 @@ namespace FrictionalContact
                                     sets.robin,
                                     any_slip,
                                     problem.contact_held.stabilization);
-      K.vmult(K_du, du);
+      // For a nonlinear law the tangent is made here, where du meets the
+      // node conditions.
+      problem.internal_force(du, K_du, /*with_tangent=*/true);
       rhs = problem.load;
       rhs -= K_du;
       if (any_slip)
@@ -332,6 +335,9 @@ namespace FrictionalContact
       {}
 
       TrilinosWrappers::MPI::Vector K_du, rhs, w, T_r, scratch, previous_du;
+      /// T r of the previous iterate (kept for nonlinear laws only, whose
+      /// line search evaluates the force balance along the step).
+      TrilinosWrappers::MPI::Vector previous_T_r;
       /// The force balance residuals K du - p - T r of both iterates.
       TrilinosWrappers::MPI::Vector previous_residual, residual;
       std::vector<Tensor<1, dim>>   previous_r, admissible_r;
@@ -350,6 +356,8 @@ namespace FrictionalContact
     {
       work.previous_du       = du;
       work.previous_r        = r;
+      if (problem.nonlinear != nullptr)
+        work.previous_T_r = work.T_r;
       work.previous_residual = work.K_du;
       work.previous_residual -= problem.load;
       work.previous_residual -= work.T_r;
@@ -377,7 +385,7 @@ namespace FrictionalContact
                       std::vector<Tensor<1, dim>>      &r,
                       NewtonWorkspace<dim>             &work)
     {
-      problem.stiffness.vmult(work.K_du, du);
+      problem.internal_force(du, work.K_du);
       work.scratch = work.K_du;
       work.scratch -= problem.load;
       active_reactions(problem.contact, conditions, work.scratch, r);
@@ -385,15 +393,27 @@ namespace FrictionalContact
       work.residual = work.K_du;
       work.residual -= problem.load;
       work.residual -= work.T_r;
+      // A nonlinear law's force balance along the step, by evaluating it
+      // (w and rhs are free once the step is taken).
+      std::function<double(double)> nonlinear_balance;
+      if (problem.nonlinear != nullptr)
+        nonlinear_balance = [&](const double t) {
+          work.w = work.previous_du;
+          work.w.sadd(1 - t, t, du);
+          problem.internal_force(work.w, work.rhs);
+          work.rhs -= problem.load;
+          work.rhs.add(-(1 - t), work.previous_T_r, -t, work.T_r);
+          return work.rhs.norm_sqr();
+        };
       const MeritAlongStep<dim> merit(problem, c, c_t, friction, mean_c,
                                       work.previous_du, du, work.previous_r, r,
                                       work.previous_residual, work.residual,
-                                      work.scratch);
+                                      work.scratch, nonlinear_balance);
       const LineSearchStep step = line_search(merit);
       if (step.t < 1)
         {
           shorten_step(step.t, work.previous_du, work.previous_r, du, r);
-          problem.stiffness.vmult(work.K_du, du);
+          problem.internal_force(du, work.K_du);
           problem.contact.apply(r, work.T_r);
         }
       return step;
@@ -559,8 +579,11 @@ namespace FrictionalContact
 
     const double load_norm = problem.load.l2_norm();
     NewtonWorkspace<dim> work(du, n);
-    const double mean_c = mean_over_candidates(contact, c, comm);
-    problem.stiffness.vmult(work.K_du, du);
+    // Without candidates (a nonlinear body that touches nothing) any
+    // positive scale serves the merit's force balance.
+    const double mean_c =
+      contact.n_candidates() > 0 ? mean_over_candidates(contact, c, comm) : 1.;
+    problem.internal_force(du, work.K_du);
     contact.apply(r, work.T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);
@@ -663,13 +686,22 @@ namespace FrictionalContact
         result.last_step  = work.previous_du.l2_norm();
         result.residuals  = admissible_residuals(
           problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);
-        const HistoryRow row{k + 1,
-                             timer.wall_time(),
-                             result.residuals,
-                             result.last_step,
-                             linear_iterations,
-                             changes,
-                             forcing_term};
+        HistoryRow row{k + 1,
+                       timer.wall_time(),
+                       result.residuals,
+                       result.last_step,
+                       linear_iterations,
+                       changes,
+                       forcing_term};
+        if (record_history)
+          {
+            row.active_nodes = Utilities::MPI::sum<types::global_dof_index>(
+              std::count_if(conditions.begin(), conditions.end(),
+                            [](const NodeCondition c) { return c != NodeCondition::none; }),
+              comm);
+            row.plastic_points =
+              problem.nonlinear != nullptr ? problem.nonlinear->plastic_points() : 0;
+          }
         if (record_history)
           result.history.push_back(row);
         this->report(k + 1, row);

@@ -4,6 +4,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/model/quadrature_history.h>
+
 #include <string>
 #include <vector>
 
@@ -34,14 +36,17 @@ namespace FrictionalContact
     bool
     exists() const;
 
-    /// Saves the mesh, the @p vectors (with ghost entries), @p state and
-    /// the manifest with @p scene (the parameters as run, ShortPRM), after
-    /// reserving the space they need; throws a WriteError, leaving the
-    /// last checkpoint as it was, if the reservation or a write fails.
+    /// Saves the mesh, the @p vectors (with ghost entries), the material
+    /// laws' @p history, @p state and the manifest with @p scene (the
+    /// parameters as run, ShortPRM), after reserving the space they need;
+    /// throws a WriteError, leaving the last checkpoint as it was, if the
+    /// reservation or a write fails. The history comes back with
+    /// QuadratureHistory::unpack() after load_vectors().
     void
     save(const parallel::distributed::Triangulation<dim> &triangulation,
          const DoFHandler<dim>                           &dof_handler,
          const std::vector<const Vector *>               &vectors,
+         QuadratureHistory<dim>                          &history,
          const std::string                               &state,
          const std::string                               &scene) const;
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/driver/increment_response.h>
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/model/mortar_basis.h>
 #include <frictional_contact/model/mortar_preconditioner.h>
@@ -31,6 +32,9 @@ namespace FrictionalContact
   template <int dim>
   struct IncrementOutcome
   {
+    /// The internal force of nonlinear laws over the increment (none for
+    /// linear ones); on the heap, like the load, for the problem's pointer.
+    std::unique_ptr<IncrementResponse<dim>> response;
     /// p = p^{l+1} - K (u^l + the prescribed increment); on the heap, so
     /// that the problem's reference to it survives a move of the outcome
     /// (the re-solves on adapted meshes assign outcomes).
@@ -93,7 +97,7 @@ namespace FrictionalContact
      * converge is reported in the outcome's statistics.
      */
     IncrementOutcome<dim>
-    solve(const Model<dim>  &model,
+    solve(Model<dim>        &model,
           const State<dim>  &state,
           const unsigned int increment,
           const double      t_start,

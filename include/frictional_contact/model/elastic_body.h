@@ -99,6 +99,21 @@ namespace FrictionalContact
     Tensor<1, dim>
     support_reaction(const Vector &u, const double load_factor) const;
 
+    /// The same for bodies of nonlinear laws, from their internal force
+    /// @p internal_force (distributed with the hanging-node constraints
+    /// only). Collective.
+    Tensor<1, dim>
+    support_reaction_of(const Vector &internal_force, const double load_factor) const;
+
+    /// The assembled K, to be replaced by the tangent of nonlinear laws
+    /// (BodyResponse::internal_force()) in place: what refers to K sees the
+    /// tangent from then on.
+    TrilinosWrappers::SparseMatrix &
+    matrix_for_tangent()
+    {
+      return stiffness_matrix;
+    }
+
     /**
      * The increment of the prescribed displacements from time @p t_old to
      * @p t_new, at the prescribed dofs, zero elsewhere (the lifting of an
@@ -230,7 +245,10 @@ namespace FrictionalContact
     }
 
   private:
-    /// Element stiffness matrix and load vector (load factor 1) of @p cell.
+    /// The components of @p residual summed over the fixed dofs.
+    Tensor<1, dim>
+    sum_at_fixed_dofs(const Vector &residual) const;
+
     /**
      * force = sum over the locally owned cells of K_e u_e - load_factor p_e,
      * distributed with @p distribute (all constraints, or only the

@@ -173,8 +173,10 @@ namespace FrictionalContact
     SymmetricTensor<2, dim> stress_by_volumetric_strain;
     SymmetricTensor<2, dim> volumetric_stress_by_strain;
     double                  volumetric_stress_by_volumetric_strain = 0;
-    /// Whether the point flows plastically in this step.
-    bool plastic = false;
+    /// Whether the point flows plastically in this step, and whether it
+    /// is on the yield surface (also once its flow is committed).
+    bool plastic  = false;
+    bool at_yield = false;
   };
 
 

@@ -6,12 +6,14 @@
 
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/geometry/interface.h>
+#include <frictional_contact/model/body_response.h>
 #include <frictional_contact/model/boundary_conditions.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/solvers/elasticity_operator.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/mesh_refinement.h>
+#include <frictional_contact/model/quadrature_history.h>
 
 #include <functional>
 #include <memory>
@@ -64,6 +66,59 @@ namespace FrictionalContact
     /// allow a rigid-body motion of a body that no contact faces.
     void
     assemble();
+
+    /// Whether some body's law is not linear (plasticity): its increments
+    /// take Newton's method on the internal force, with a tangent made at
+    /// each step.
+    bool
+    nonlinear() const
+    {
+      return !materials->all_linear();
+    }
+
+    /// The bodies' response (internal force, tangent, stress) to a
+    /// displacement, from the committed history.
+    const BodyResponse<dim> &
+    get_response() const
+    {
+      return *response;
+    }
+
+    /**
+     * K_T(u) into the body's matrix (what refers to K sees it), and
+     * f_int(u) into @p force (zero at the held dofs), for @p u_ghosted.
+     * Returns the points that flow plastically. Collective.
+     */
+    types::global_dof_index
+    update_tangent(const TrilinosWrappers::MPI::Vector &u_ghosted,
+                   TrilinosWrappers::MPI::Vector       &force);
+
+    /// Commits the history of the displacement @p u of an accepted
+    /// increment. Collective.
+    void
+    commit(const TrilinosWrappers::MPI::Vector &u);
+
+    /// The quadrature history, for checkpoints.
+    QuadratureHistory<dim> &
+    get_history()
+    {
+      return *history;
+    }
+
+    /// Takes the history of a loaded checkpoint from the mesh (after its
+    /// vectors). Collective.
+    void
+    load_history()
+    {
+      history->unpack(*triangulation);
+    }
+
+    /// The sum of the support reactions for the displacement @p u_ghosted
+    /// (ElasticBody::support_reaction(), from the laws' internal force when
+    /// they are not linear). Collective.
+    Tensor<1, dim>
+    support_reaction(const TrilinosWrappers::MPI::Vector &u_ghosted,
+                     const double                         load_factor) const;
 
     /// The bodies (material ids) that only contact holds against rigid-body
     /// motion: K is singular on them (after assemble()).
@@ -162,8 +217,10 @@ namespace FrictionalContact
     BoundaryNames                                              boundary_names;
     std::map<std::string, types::material_id>                  bodies;
     std::unique_ptr<Materials<dim>>                            materials;
+    std::unique_ptr<QuadratureHistory<dim>>                    history;
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<ElasticBody<dim>>        body;
+    std::unique_ptr<BodyResponse<dim>>       response;
     std::unique_ptr<ContactOperator<dim>>    contact;
     /// See bodies_held_by_contact_alone().
     std::set<types::material_id> held_by_contact_alone;

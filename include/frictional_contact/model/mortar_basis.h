@@ -34,12 +34,27 @@ namespace FrictionalContact
     /// Q from the mortar rows of @p contact (after update_pairs()).
     MortarBasis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
-    /// K_w = Q^T K Q of the body's stiffness matrix.
+    /// K_w = Q^T K Q of the body's stiffness matrix, or of the tangent of
+    /// nonlinear laws once update_tangent() made it.
     const StiffnessOperator &
     stiffness() const
     {
+      return has_tangent ? tangent_operator : transformed_operator;
+    }
+
+    /// Q^T K Q of the body's stiffness matrix as it was when the basis was
+    /// made: what preconditioners are built from (stiffness() changes with
+    /// the tangent).
+    const StiffnessOperator &
+    initial_stiffness() const
+    {
       return transformed_operator;
     }
+
+    /// K_T,w = Q^T K_T Q for the tangent @p tangent of nonlinear laws; from
+    /// then on stiffness().
+    void
+    update_tangent(const TrilinosWrappers::SparseMatrix &tangent);
 
     /// The body's volumetric split in w (A_w = Q^T A Q, B_w = B Q), empty
     /// if the body has none.
@@ -74,6 +89,9 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};
+    TrilinosWrappers::SparseMatrix transformed_tangent;
+    AssembledStiffness             tangent_operator{transformed_tangent};
+    bool                           has_tangent = false;
     TrilinosWrappers::SparseMatrix transformed_divergence;
     VolumetricSplit                split;
   };

@@ -63,7 +63,7 @@ namespace FrictionalContact
                     const double                      time,
                     const ElasticBody<dim>           &body,
                     const ContactOperator<dim>       &contact,
-                    const Materials<dim>              &materials,
+                    const BodyResponse<dim>           &response,
                     const Vector                     &u,
                     const ContactResults<dim>        &results);
 
@@ -79,7 +79,7 @@ namespace FrictionalContact
     write_csv_files(const unsigned int          increment,
                     const ElasticBody<dim>     &body,
                     const ContactOperator<dim> &contact,
-                    const Materials<dim>              &materials,
+                    const BodyResponse<dim>           &response,
                     const Vector               &u,
                     const ContactResults<dim>  &results) const;
 

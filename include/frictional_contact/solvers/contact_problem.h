@@ -3,8 +3,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/solvers/contact_map.h>
+#include <frictional_contact/solvers/nonlinear_stiffness.h>
+#include <frictional_contact/solvers/stiffness_operator.h>
 
 #include <cstdint>
 #include <string>
@@ -51,7 +52,8 @@ namespace FrictionalContact
    * One incremental problem of the paper, eq. (9): find du and r with
    * K du - p = T r and the cone complementarity at every candidate, where
    * the displacement of node j relative to the obstacle is
-   * T_j^T du - obstacle_slip[j].
+   * T_j^T du - obstacle_slip[j]. For bodies of nonlinear laws, K du is
+   * N(du) (NonlinearStiffness) and K its tangent.
    */
   template <int dim>
   struct IncrementalProblem
@@ -65,6 +67,7 @@ namespace FrictionalContact
       , contact(contact)
     {}
 
+    /// K, or the tangent K_T of the last evaluation of @p nonlinear.
     const StiffnessOperator &stiffness;
     /// p = p^{l+1} - K u^l (zero at fixed dofs).
     const TrilinosWrappers::MPI::Vector &load;
@@ -84,6 +87,21 @@ namespace FrictionalContact
     std::vector<Tensor<1, dim>> obstacle_slip;
     /// The bodies only contact holds (none for most scenes).
     ContactHeldBodies contact_held;
+    /// The internal force of nonlinear laws (nullptr: K du).
+    NonlinearStiffness *nonlinear = nullptr;
+
+    /// K du, or N(du) for nonlinear laws (then with @p with_tangent also
+    /// the tangent at du as the stiffness).
+    void
+    internal_force(const TrilinosWrappers::MPI::Vector &du,
+                   TrilinosWrappers::MPI::Vector       &dst,
+                   const bool                           with_tangent = false) const
+    {
+      if (nonlinear != nullptr)
+        nonlinear->internal_force_change(du, dst, with_tangent);
+      else
+        stiffness.vmult(dst, du);
+    }
 
     /// (t_n,j^T du, T_t,j^T du - obstacle's tangential motion)
     Tensor<1, dim>
@@ -140,6 +158,10 @@ namespace FrictionalContact
     /// The factor the Krylov solver reduced its residual by (Newton's
     /// forcing term; 0 for Algorithm 2).
     double forcing_term;
+    /// Candidates in contact (stick or slip) and quadrature points that
+    /// flow plastically in the iteration (Newton; 0 for Algorithm 2).
+    types::global_dof_index active_nodes   = 0;
+    types::global_dof_index plastic_points = 0;
   };
 
   /// What a contact solve reports, whatever the method.

@@ -70,6 +70,14 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Whether the method solves problems of nonlinear laws
+    /// (IncrementalProblem::nonlinear).
+    virtual bool
+    handles_nonlinear_laws() const
+    {
+      return false;
+    }
+
     /// Whether the method solves problems whose K is singular on bodies
     /// that only contact holds (IncrementalProblem::contact_held).
     virtual bool

@@ -7,6 +7,7 @@
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -262,8 +263,9 @@ namespace FrictionalContact
      * The merit of the line search at the point t of the segment from the
      * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
      * complementarity functions of all nodes, scaled by c_j, plus the
-     * squared force balance residual (linear along the segment), scaled by
-     * the mean c. Collective.
+     * squared force balance residual, scaled by the mean c. The residual is
+     * linear along the segment for a linear law; for a nonlinear one
+     * @p nonlinear_balance evaluates its square at t. Collective.
      */
     template <int dim>
     class MeritAlongStep
@@ -280,7 +282,8 @@ namespace FrictionalContact
                      const std::vector<Tensor<1, dim>> &r_1,
                      const Vector                      &balance_0,
                      const Vector                      &balance_1,
-                     Vector                            &scratch)
+                     Vector                            &scratch,
+                     std::function<double(double)> nonlinear_balance = {})
         : problem(problem)
         , c(c)
         , c_t(c_t)
@@ -290,6 +293,7 @@ namespace FrictionalContact
         , du_1(du_1)
         , r_0(r_0)
         , r_1(r_1)
+        , nonlinear_balance(std::move(nonlinear_balance))
       {
         balance_a = balance_0.norm_sqr();
         balance_b = balance_0 * balance_1 - balance_a;
@@ -322,7 +326,10 @@ namespace FrictionalContact
             sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
           }
         return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
-               (balance_a + 2 * t * balance_b + t * t * balance_c) / mean_c;
+               (nonlinear_balance ? (t == 0 ? balance_a : t == 1 ? balance_a + 2 * balance_b + balance_c :
+                                                              nonlinear_balance(t)) :
+                                    balance_a + 2 * t * balance_b + t * t * balance_c) /
+                 mean_c;
       }
 
     private:
@@ -336,6 +343,7 @@ namespace FrictionalContact
       const std::vector<Tensor<1, dim>> &r_0;
       const std::vector<Tensor<1, dim>> &r_1;
       double                             balance_a, balance_b, balance_c;
+      const std::function<double(double)> nonlinear_balance;
     };
 
 

@@ -58,6 +58,13 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Yes: each step evaluates the internal force and its tangent.
+    bool
+    handles_nonlinear_laws() const override
+    {
+      return true;
+    }
+
     /// Yes: it starts from the nodes nearest to contact and stabilises
     /// the Newton matrices (ContactHeldBodies).
     bool

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/model/model.h>
+#include <frictional_contact/model/mortar_basis.h>
+#include <frictional_contact/solvers/nonlinear_stiffness.h>
+
+namespace FrictionalContact
+{
+  /**
+   * The internal force of the model's nonlinear laws over one increment, as
+   * the solvers see it (NonlinearStiffness): N(du) = f_int(u_0 + du) -
+   * f_int(u_0) from the configuration u_0 the increment starts from (u^l
+   * with the prescribed increment), its held and hanging dofs completed by
+   * the constraints; in the basis w of contact pairs, N_w(dw) = Q^T
+   * N(Q dw) and the tangent Q^T K_T Q. Owns u_0, f_int(u_0) and the
+   * vectors of the evaluations.
+   */
+  template <int dim>
+  class IncrementResponse : public NonlinearStiffness
+  {
+  public:
+    /// Evaluates f_int(u_0) and the tangent at @p start; @p mortar: the
+    /// increment's basis of contact pairs (nullptr without).
+    IncrementResponse(Model<dim> &model, MortarBasis<dim> *mortar, const Vector &start);
+
+    /// f_int(u_0), in u.
+    const Vector &
+    start_force() const
+    {
+      return force_at_start;
+    }
+
+    void
+    internal_force_change(const Vector &du, Vector &dst, const bool with_tangent) override;
+
+    types::global_dof_index
+    plastic_points() const override
+    {
+      return plastic;
+    }
+
+  private:
+    /// f_int(u) into force for u = u_0 + @p du_in_u (the tangent too if
+    /// asked).
+    void
+    evaluate(const Vector &du_in_u, const bool with_tangent);
+
+    Model<dim>             &model;
+    MortarBasis<dim>       *mortar;
+    const Vector            start;
+    Vector                  force_at_start, u, u_ghosted, force, du_in_u;
+    types::global_dof_index plastic = 0;
+  };
+} // namespace FrictionalContact

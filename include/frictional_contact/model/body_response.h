@@ -1,0 +1,124 @@
+#pragma once
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/model/material.h>
+#include <frictional_contact/model/quadrature_history.h>
+
+#include <vector>
+
+namespace FrictionalContact
+{
+  /// What a cell's quadrature points say, averaged over the cell: for the
+  /// VTU files and the CSV tables.
+  template <int dim>
+  struct CellState
+  {
+    /// The in-plane stress, the out-of-plane normal stress (2D) and the
+    /// mean stress trace(sigma)/3 of the 3D stress.
+    SymmetricTensor<2, dim> stress;
+    double                  out_of_plane_stress = 0;
+    double                  mean_stress         = 0;
+    /// The von Mises equivalent stress sqrt(3/2) |dev sigma| (3D stress).
+    double von_mises_stress = 0;
+    /// The equivalent plastic strain and the plastic strain tensor (3D).
+    double                equivalent_plastic_strain = 0;
+    SymmetricTensor<2, 3> plastic_strain;
+    /// 0: never yielded; 1: plastic strain, now elastic (unloaded); 2: a
+    /// point flows (on the yield surface).
+    unsigned int yield_state = 0;
+  };
+
+
+
+  /**
+   * The bodies' response to a displacement u: at the quadrature points of
+   * the locally owned cells, the strain of the element (the standard Q1
+   * element's, or the B-bar element's with the cell average of the
+   * dilatation as its volumetric part), the stress of each body's law from
+   * the committed history, and from them the internal force f_int(u), the
+   * tangent K_T(u), the history that goes with u, and the cell averages
+   * for output. The one place where stress is recovered: the residual,
+   * the VTU files and the tables all take it from here.
+   *
+   * The element: f_i = int grad^s phi_i : sigma + (div_bar phi_i - div
+   * phi_i) pi, with pi the law's volumetric stress (zero term for the
+   * standard element), and K_T its derivative.
+   */
+  template <int dim>
+  class BodyResponse
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    BodyResponse(const ElasticBody<dim>       &body,
+                 const Materials<dim>         &materials,
+                 QuadratureHistory<dim>       &history);
+
+    /**
+     * f_int(u) for @p u_ghosted (with ghost entries) into @p force,
+     * distributed with @p distribute (all constraints: zero at the held
+     * dofs; or the hanging-node ones), and if @p tangent is given K_T(u)
+     * into it (all constraints). Returns how many quadrature points flow
+     * plastically, on all ranks. Collective.
+     */
+    types::global_dof_index
+    internal_force(const Vector                    &u_ghosted,
+                   const AffineConstraints<double> &distribute,
+                   Vector                          &force,
+                   TrilinosWrappers::SparseMatrix  *tangent) const;
+
+    /// Makes the history of u (an accepted increment's) the committed one.
+    void
+    commit(const Vector &u_ghosted);
+
+    /// The averages of each locally owned cell, by active_cell_index()
+    /// (default values on the other cells).
+    std::vector<CellState<dim>>
+    cell_states(const Vector &u_ghosted) const;
+
+  private:
+    /// What one cell needs: FEValues on the 2 x 2 (x 2) Gauss points, the
+    /// local displacement, the strains and the responses at the points.
+    struct CellScratch
+    {
+      explicit CellScratch(const FiniteElement<dim> &fe);
+
+      QGauss<dim>                          quadrature;
+      FEValues<dim>                        fe_values;
+      dealii::Vector<double>               u;
+      std::vector<types::global_dof_index> dof_indices;
+      /// grad^s phi_i and div phi_i at each point; the cell averages of
+      /// div phi_i.
+      std::vector<std::vector<SymmetricTensor<2, dim>>> shape_strain;
+      std::vector<std::vector<double>>                  shape_divergence;
+      std::vector<double>                               mean_divergence;
+      std::vector<MaterialResponse<dim>>                responses;
+      FullMatrix<double>                                matrix;
+      dealii::Vector<double>                            force;
+    };
+
+    /// The responses at the points of @p cell (from the committed
+    /// history; the new history into @p new_history if given).
+    void
+    evaluate_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const Vector                                         &u_ghosted,
+                  const bool                                            with_tangent,
+                  CellScratch                                          &scratch,
+                  double                                               *new_history) const;
+
+    /// The cell force (and matrix) of the responses in @p scratch.
+    void
+    cell_force_and_tangent(const bool mean_dilatation,
+                           const bool with_tangent,
+                           CellScratch &scratch) const;
+
+    const ElasticBody<dim>  &body;
+    const Materials<dim>    &materials;
+    QuadratureHistory<dim>  &history;
+  };
+} // namespace FrictionalContact

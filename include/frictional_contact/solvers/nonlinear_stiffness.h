@@ -1,0 +1,35 @@
+#pragma once
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+namespace FrictionalContact
+{
+  using namespace dealii;
+
+  /**
+   * The internal force of bodies whose laws are not linear, as the Newton
+   * method sees it over one increment from the configuration u_0:
+   * N(du) = f_int(u_0 + du) - f_int(u_0), which for a linear law is K du,
+   * and the tangent K_T = dN/d du that the problem's StiffnessOperator then
+   * applies. A law's history is read, never written: a failed iteration
+   * or a cut increment starts again from the committed state.
+   */
+  class NonlinearStiffness
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    virtual ~NonlinearStiffness() = default;
+
+    /// @p dst = N(@p du); with @p with_tangent, the problem's stiffness
+    /// becomes the tangent at du. Collective.
+    virtual void
+    internal_force_change(const Vector &du, Vector &dst, const bool with_tangent) = 0;
+
+    /// The quadrature points that flowed plastically at the last
+    /// evaluation, on all ranks.
+    virtual types::global_dof_index
+    plastic_points() const = 0;
+  };
+} // namespace FrictionalContact

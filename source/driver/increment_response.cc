@@ -1,0 +1,67 @@
+#include <frictional_contact/driver/increment_response.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
+                                            MortarBasis<dim> *mortar,
+                                            const Vector     &start)
+    : model(model)
+    , mortar(mortar)
+    , start(start)
+    , force_at_start(model.get_body().make_vector())
+    , u(force_at_start)
+    , u_ghosted(model.get_body().make_ghosted_vector())
+    , force(force_at_start)
+    , du_in_u(force_at_start)
+  {
+    du_in_u = 0;
+    evaluate(du_in_u, true);
+    force_at_start = force;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementResponse<dim>::evaluate(const Vector &du, const bool with_tangent)
+  {
+    u = du;
+    // The held dofs stay (their increment is in u_0), hanging ones follow.
+    model.get_body().get_constraints().distribute(u);
+    u += start;
+    u_ghosted = u;
+    if (with_tangent)
+      {
+        plastic = model.update_tangent(u_ghosted, force);
+        if (mortar != nullptr)
+          mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"));
+      }
+    else
+      plastic = model.get_response().internal_force(
+        u_ghosted, model.get_body().get_constraints(), force, nullptr);
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementResponse<dim>::internal_force_change(const Vector &du,
+                                                Vector       &dst,
+                                                const bool    with_tangent)
+  {
+    if (mortar != nullptr)
+      mortar->displacement_to_u(du, du_in_u);
+    else
+      du_in_u = du;
+    evaluate(du_in_u, with_tangent);
+    force -= force_at_start;
+    if (mortar != nullptr)
+      mortar->force_to_w(force, dst);
+    else
+      dst = force;
+  }
+
+  template class IncrementResponse<2>;
+  template class IncrementResponse<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,257 @@
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/model/body_response.h>
+
+#include <cmath>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  BodyResponse<dim>::BodyResponse(const ElasticBody<dim> &body,
+                                  const Materials<dim>   &materials,
+                                  QuadratureHistory<dim> &history)
+    : body(body)
+    , materials(materials)
+    , history(history)
+  {}
+
+
+
+  template <int dim>
+  BodyResponse<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
+    : quadrature(2)
+    , fe_values(fe, quadrature, update_gradients | update_JxW_values)
+    , u(fe.n_dofs_per_cell())
+    , dof_indices(fe.n_dofs_per_cell())
+    , shape_strain(quadrature.size(),
+                   std::vector<SymmetricTensor<2, dim>>(fe.n_dofs_per_cell()))
+    , shape_divergence(quadrature.size(), std::vector<double>(fe.n_dofs_per_cell()))
+    , mean_divergence(fe.n_dofs_per_cell())
+    , responses(quadrature.size())
+    , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+    , force(fe.n_dofs_per_cell())
+  {}
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::evaluate_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Vector                                         &u_ghosted,
+    const bool                                            with_tangent,
+    CellScratch                                          &scratch,
+    double                                               *new_history) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    FEValues<dim>                   &fe_values = scratch.fe_values;
+    const unsigned int               n_dofs    = scratch.u.size();
+    const MaterialModel<dim>        &law       = materials.of(cell->material_id());
+    fe_values.reinit(cell);
+    cell->get_dof_values(u_ghosted, scratch.u);
+
+    std::fill(scratch.mean_divergence.begin(), scratch.mean_divergence.end(), 0.);
+    double volume = 0, mean_dilatation = 0;
+    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double JxW = fe_values.JxW(q);
+        volume += JxW;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            scratch.shape_strain[q][i] = fe_values[displacement].symmetric_gradient(i, q);
+            scratch.shape_divergence[q][i] = trace(scratch.shape_strain[q][i]);
+            scratch.mean_divergence[i] += scratch.shape_divergence[q][i] * JxW;
+            strain[q] += scratch.u[i] * scratch.shape_strain[q][i];
+          }
+        mean_dilatation += trace(strain[q]) * JxW;
+      }
+    for (double &d : scratch.mean_divergence)
+      d /= volume;
+    mean_dilatation /= volume;
+
+    const bool          b_bar     = law.elastic().mean_dilatation;
+    const unsigned int  n_history = law.n_history_values();
+    const double       *committed = history.values(cell);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      law.evaluate(strain[q],
+                   b_bar ? mean_dilatation : trace(strain[q]),
+                   committed == nullptr ? nullptr : committed + q * n_history,
+                   with_tangent,
+                   scratch.responses[q],
+                   new_history == nullptr ? nullptr : new_history + q * n_history);
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::cell_force_and_tangent(const bool   mean_dilatation,
+                                            const bool   with_tangent,
+                                            CellScratch &scratch) const
+  {
+    const unsigned int n_dofs = scratch.u.size();
+    scratch.force             = 0;
+    if (with_tangent)
+      scratch.matrix = 0;
+    const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
+    std::vector<SymmetricTensor<2, dim>> C_B(n_dofs);
+    std::vector<double>                  a(n_dofs), c(n_dofs);
+    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+      {
+        const double                 JxW = scratch.fe_values.JxW(q);
+        const MaterialResponse<dim> &r   = scratch.responses[q];
+        const auto                  &B   = scratch.shape_strain[q];
+        const auto                  &div = scratch.shape_divergence[q];
+        const auto                  &div_bar = scratch.mean_divergence;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          scratch.force(i) +=
+            (B[i] * r.stress +
+             (mean_dilatation ? (div_bar[i] - div[i]) * r.volumetric_stress : 0.)) *
+            JxW;
+        if (!with_tangent)
+          continue;
+        // Standard element: d sigma = (C + c1 (x) I) : d epsilon. B-bar:
+        // K_ij = B_i:C:B_j + B_i:c1 div_bar_j
+        //        + (div_bar_i - div_i) (c2:B_j + k div_bar_j).
+        const SymmetricTensor<4, dim> C =
+          mean_dilatation ? r.stress_by_strain :
+                            r.stress_by_strain +
+                              outer_product(r.stress_by_volumetric_strain, I);
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            C_B[j] = C * B[j];
+            a[j]   = B[j] * r.stress_by_volumetric_strain;
+            c[j]   = r.volumetric_stress_by_strain * B[j] +
+                   r.volumetric_stress_by_volumetric_strain * div_bar[j];
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            scratch.matrix(i, j) +=
+              (B[i] * C_B[j] +
+               (mean_dilatation ? a[i] * div_bar[j] + (div_bar[i] - div[i]) * c[j] : 0.)) *
+              JxW;
+      }
+    if (with_tangent)
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = i + 1; j < n_dofs; ++j)
+          scratch.matrix(i, j) = scratch.matrix(j, i);
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  BodyResponse<dim>::internal_force(const Vector                    &u_ghosted,
+                                    const AffineConstraints<double> &distribute,
+                                    Vector                          &force,
+                                    TrilinosWrappers::SparseMatrix  *tangent) const
+  {
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    CellScratch            scratch(dof_handler.get_fe());
+    force = 0;
+    if (tangent != nullptr)
+      *tangent = 0;
+    types::global_dof_index plastic_points = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          evaluate_cell(cell, u_ghosted, tangent != nullptr, scratch, nullptr);
+          for (const MaterialResponse<dim> &r : scratch.responses)
+            plastic_points += r.plastic ? 1 : 0;
+          cell_force_and_tangent(materials.of(cell->material_id()).elastic().mean_dilatation,
+                                 tangent != nullptr,
+                                 scratch);
+          cell->get_dof_indices(scratch.dof_indices);
+          if (tangent != nullptr)
+            distribute.distribute_local_to_global(
+              scratch.matrix, scratch.force, scratch.dof_indices, *tangent, force);
+          else
+            distribute.distribute_local_to_global(scratch.force,
+                                                  scratch.dof_indices,
+                                                  force);
+        }
+    force.compress(VectorOperation::add);
+    if (tangent != nullptr)
+      tangent->compress(VectorOperation::add);
+    return Utilities::MPI::sum(plastic_points, body.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::commit(const Vector &u_ghosted)
+  {
+    if (!history.active())
+      return;
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    CellScratch            scratch(dof_handler.get_fe());
+    std::vector<double>    updated;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        if (double *values = history.values(cell))
+          {
+            const unsigned int n = scratch.quadrature.size() *
+                                   materials.of(cell->material_id()).n_history_values();
+            updated.resize(n);
+            evaluate_cell(cell, u_ghosted, false, scratch, updated.data());
+            std::copy(updated.begin(), updated.end(), values);
+          }
+  }
+
+
+
+  template <int dim>
+  std::vector<CellState<dim>>
+  BodyResponse<dim>::cell_states(const Vector &u_ghosted) const
+  {
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    CellScratch            scratch(dof_handler.get_fe());
+    std::vector<CellState<dim>> states(
+      dof_handler.get_triangulation().n_active_cells());
+    const unsigned int n_points = scratch.quadrature.size();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
+          const MaterialModel<dim> &law       = materials.of(cell->material_id());
+          const double             *committed = history.values(cell);
+          CellState<dim>           &state     = states[cell->active_cell_index()];
+          double volume = 0;
+          for (unsigned int q = 0; q < n_points; ++q)
+            volume += scratch.fe_values.JxW(q);
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const MaterialResponse<dim> &r      = scratch.responses[q];
+              const double                 weight = scratch.fe_values.JxW(q) / volume;
+              SymmetricTensor<2, 3>        stress_3d;
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  stress_3d[i][j] = r.stress[i][j];
+              if (dim == 2)
+                stress_3d[2][2] = r.out_of_plane_stress;
+              state.stress += weight * r.stress;
+              state.out_of_plane_stress += weight * r.out_of_plane_stress;
+              state.mean_stress += weight * trace(stress_3d) / 3.;
+              state.von_mises_stress +=
+                weight * std::sqrt(1.5) * deviator(stress_3d).norm();
+              if (committed != nullptr)
+                {
+                  const double *point = committed + q * law.n_history_values();
+                  state.equivalent_plastic_strain +=
+                    weight * law.equivalent_plastic_strain(point);
+                  state.plastic_strain += weight * law.plastic_strain(point);
+                }
+              if (r.at_yield)
+                state.yield_state = 2;
+            }
+          if (state.yield_state == 0 && state.equivalent_plastic_strain > 0)
+            state.yield_state = 1;
+        }
+    return states;
+  }
+
+  template class BodyResponse<2>;
+  template class BodyResponse<3>;
+} // namespace FrictionalContact

@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Checks a run of a cube in uniaxial stress (tests/j2_uniaxial_*.prm: rollers
+on three faces, the top face moved along z) against the exact stress-strain
+curve of J2 plasticity with linear isotropic and kinematic hardening, which
+in uniaxial stress is the 1D law sigma = E (eps - eps_p), yield where
+|sigma - q| = sigma_y + H_iso alpha, q = H_kin eps_p (the Bauschinger
+effect), integrated increment by increment with the same radial return.
+
+usage: check_uniaxial.py OUTPUT_DIR --tolerance 1e-10
+
+Reads the run's parameters.prm (E, sigma_y, H_iso, H_kin), and for every
+increment displacement-NNNNN.csv (the strain eps = u_z / z of the top
+vertices, all equal) and stress-NNNNN.csv: in every cell s_zz must equal the
+exact sigma, the other stress components vanish, and the equivalent plastic
+strain equal alpha, all within the tolerance relative to sigma_y (strain:
+relative to sigma_y / E). The path must leave the elastic range and come
+back in both directions, or the check proves little.
+"""
+import argparse
+import csv
+import glob
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_analytic import read_parameters  # noqa: E402
+
+
+def exact_path(strains, E, yield_stress, H_iso, H_kin):
+    """(sigma, alpha) after each strain of the path, by the 1D radial return."""
+    plastic, alpha, back = 0.0, 0.0, 0.0
+    path = []
+    for eps in strains:
+        trial = E * (eps - plastic)
+        relative = trial - back
+        excess = abs(relative) - (yield_stress + H_iso * alpha)
+        sigma = trial
+        if excess > 0:
+            step = excess / (E + H_iso + H_kin)
+            sign = 1.0 if relative > 0 else -1.0
+            plastic += step * sign
+            alpha += step
+            back += H_kin * step * sign
+            sigma = trial - E * step * sign
+        path.append((sigma, alpha))
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("directory")
+    parser.add_argument("--tolerance", type=float, default=1e-10)
+    args = parser.parse_args()
+    p = read_parameters(os.path.join(args.directory, "parameters.prm"))
+    E = float(p["Material/Young's modulus"])
+    yield_stress = float(p["Material/J2 plasticity/Yield stress"])
+    H_iso = float(p["Material/J2 plasticity/Isotropic hardening modulus"])
+    H_kin = float(p["Material/J2 plasticity/Kinematic hardening modulus"])
+
+    strains = []
+    for name in sorted(glob.glob(os.path.join(args.directory, "displacement-*.csv"))):
+        with open(name) as f:
+            top = [r for r in csv.DictReader(f) if float(r["z"]) > 0]
+        strains.append(sum(float(r["uz"]) / float(r["z"]) for r in top) / len(top))
+    path = exact_path(strains, E, yield_stress, H_iso, H_kin)
+
+    worst = {"szz": 0.0, "other stress": 0.0, "plastic strain": 0.0}
+    files = sorted(glob.glob(os.path.join(args.directory, "stress-*.csv")))
+    if len(files) != len(strains) or not files:
+        sys.exit(f"{len(files)} stress tables for {len(strains)} increments")
+    for name, (sigma, alpha) in zip(files, path):
+        with open(name) as f:
+            for row in csv.DictReader(f):
+                worst["szz"] = max(worst["szz"], abs(float(row["szz"]) - sigma) / yield_stress)
+                for c in ("sxx", "syy", "sxy", "sxz", "syz"):
+                    worst["other stress"] = max(worst["other stress"],
+                                                abs(float(row[c])) / yield_stress)
+                worst["plastic strain"] = max(
+                    worst["plastic strain"],
+                    abs(float(row["equivalent_plastic_strain"]) - alpha) * E / yield_stress)
+    yielded = [s for s, _ in path if abs(s) > yield_stress * (1 - 1e-12)]
+    reversed_yield = any(s > 0 for s in yielded) and any(s < 0 for s in yielded)
+    ok = reversed_yield and all(v <= args.tolerance for v in worst.values())
+    print(f"uniaxial J2 (H_iso = {H_iso:g}, H_kin = {H_kin:g}), {len(path)} increments, "
+          f"peak stresses {max(s for s, _ in path):.6g} and {min(s for s, _ in path):.6g}: "
+          + ", ".join(f"{k} off by {v:.2e}" for k, v in worst.items())
+          + f" (relative, allowed {args.tolerance:g})"
+          + ("" if reversed_yield else "; the path does not yield both ways"))
+    print("PASSED" if ok else "FAILED")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
