@@ -6,6 +6,22 @@
 
 namespace FrictionalContact
 {
+  namespace
+  {
+    /// sum_m g_m s_cm: a gradient against row @p c of a symmetric tensor.
+    template <int dim>
+    double
+    against_row(const Tensor<1, dim> &g, const SymmetricTensor<2, dim> &s, const unsigned int c)
+    {
+      double sum = 0;
+      for (unsigned int m = 0; m < dim; ++m)
+        sum += g[m] * s[c][m];
+      return sum;
+    }
+  } // namespace
+
+
+
   template <int dim>
   BodyResponse<dim>::BodyResponse(const ElasticBody<dim> &body,
                                   const Materials<dim>   &materials,
@@ -21,16 +37,20 @@ namespace FrictionalContact
   BodyResponse<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
     : quadrature(2)
     , fe_values(fe, quadrature, update_gradients | update_JxW_values)
+    , dof(GeometryInfo<dim>::vertices_per_cell)
     , u(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
-    , shape_strain(quadrature.size(),
-                   std::vector<SymmetricTensor<2, dim>>(fe.n_dofs_per_cell()))
-    , shape_divergence(quadrature.size(), std::vector<double>(fe.n_dofs_per_cell()))
+    , vertex_gradient(quadrature.size(),
+                      std::vector<Tensor<1, dim>>(GeometryInfo<dim>::vertices_per_cell))
     , mean_divergence(fe.n_dofs_per_cell())
     , responses(quadrature.size())
     , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , force(fe.n_dofs_per_cell())
-  {}
+  {
+    for (unsigned int a = 0; a < dof.size(); ++a)
+      for (unsigned int c = 0; c < dim; ++c)
+        dof[a][c] = fe.component_to_system_index(c, a);
+  }
 
 
 
@@ -43,10 +63,9 @@ namespace FrictionalContact
     CellScratch                                          &scratch,
     double                                               *new_history) const
   {
-    const FEValuesExtractors::Vector displacement(0);
-    FEValues<dim>                   &fe_values = scratch.fe_values;
-    const unsigned int               n_dofs    = scratch.u.size();
-    const MaterialModel<dim>        &law       = materials.of(cell->material_id());
+    FEValues<dim>            &fe_values  = scratch.fe_values;
+    const unsigned int        n_vertices = scratch.dof.size();
+    const MaterialModel<dim> &law        = materials.of(cell->material_id());
     fe_values.reinit(cell);
     cell->get_dof_values(u_ghosted, scratch.u);
 
@@ -57,13 +76,18 @@ namespace FrictionalContact
       {
         const double JxW = fe_values.JxW(q);
         volume += JxW;
-        for (unsigned int i = 0; i < n_dofs; ++i)
+        Tensor<2, dim> gradient;
+        for (unsigned int a = 0; a < n_vertices; ++a)
           {
-            scratch.shape_strain[q][i] = fe_values[displacement].symmetric_gradient(i, q);
-            scratch.shape_divergence[q][i] = trace(scratch.shape_strain[q][i]);
-            scratch.mean_divergence[i] += scratch.shape_divergence[q][i] * JxW;
-            strain[q] += scratch.u[i] * scratch.shape_strain[q][i];
+            const Tensor<1, dim> &g = scratch.vertex_gradient[q][a] =
+              fe_values.shape_grad(scratch.dof[a][0], q);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                gradient[c] += scratch.u(scratch.dof[a][c]) * g;
+                scratch.mean_divergence[scratch.dof[a][c]] += g[c] * JxW;
+              }
           }
+        strain[q] = symmetrize(gradient);
         mean_dilatation += trace(strain[q]) * JxW;
       }
     for (double &d : scratch.mean_divergence)
@@ -90,51 +114,89 @@ namespace FrictionalContact
                                             const bool   with_tangent,
                                             CellScratch &scratch) const
   {
-    const unsigned int n_dofs = scratch.u.size();
-    scratch.force             = 0;
+    // The shape function of dof (a, c) is N_a e_c: its symmetric gradient
+    // B has the entries grad N_a in row and column c, and its divergence
+    // is d N_a / d x_c, so that the contractions reduce to sums over the
+    // gradients.
+    const unsigned int n_vertices = scratch.dof.size();
+    const auto        &dof        = scratch.dof;
+    const auto        &div_bar    = scratch.mean_divergence;
+    scratch.force                 = 0;
     if (with_tangent)
       scratch.matrix = 0;
-    const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
-    std::vector<SymmetricTensor<2, dim>> C_B(n_dofs);
-    std::vector<double>                  a(n_dofs), c(n_dofs);
+    double C[dim][dim][dim][dim];
     for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
       {
         const double                 JxW = scratch.fe_values.JxW(q);
         const MaterialResponse<dim> &r   = scratch.responses[q];
-        const auto                  &B   = scratch.shape_strain[q];
-        const auto                  &div = scratch.shape_divergence[q];
-        const auto                  &div_bar = scratch.mean_divergence;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          scratch.force(i) +=
-            (B[i] * r.stress +
-             (mean_dilatation ? (div_bar[i] - div[i]) * r.volumetric_stress : 0.)) *
-            JxW;
+        const auto                  &G   = scratch.vertex_gradient[q];
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              double f = against_row(G[a], r.stress, c);
+              if (mean_dilatation)
+                f += (div_bar[dof[a][c]] - G[a][c]) * r.volumetric_stress;
+              scratch.force(dof[a][c]) += f * JxW;
+            }
         if (!with_tangent)
           continue;
         // Standard element: d sigma = (C + c1 (x) I) : d epsilon. B-bar:
         // K_ij = B_i:C:B_j + B_i:c1 div_bar_j
         //        + (div_bar_i - div_i) (c2:B_j + k div_bar_j).
-        const SymmetricTensor<4, dim> C =
-          mean_dilatation ? r.stress_by_strain :
-                            r.stress_by_strain +
-                              outer_product(r.stress_by_volumetric_strain, I);
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          {
-            C_B[j] = C * B[j];
-            a[j]   = B[j] * r.stress_by_volumetric_strain;
-            c[j]   = r.volumetric_stress_by_strain * B[j] +
-                   r.volumetric_stress_by_volumetric_strain * div_bar[j];
-          }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            scratch.matrix(i, j) +=
-              (B[i] * C_B[j] +
-               (mean_dilatation ? a[i] * div_bar[j] + (div_bar[i] - div[i]) * c[j] : 0.)) *
-              JxW;
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int m = 0; m < dim; ++m)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int n = 0; n < dim; ++n)
+                C[c][m][d][n] = r.stress_by_strain[c][m][d][n] +
+                                (mean_dilatation || d != n ?
+                                   0. :
+                                   r.stress_by_volumetric_strain[c][m]);
+        // T_b[c][m][d] = sum_n C[c][m][d][n] dN_b/dx_n.
+        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
+        for (unsigned int b = 0; b < n_vertices; ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int m = 0; m < dim; ++m)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  double sum = 0;
+                  for (unsigned int n = 0; n < dim; ++n)
+                    sum += C[c][m][d][n] * G[b][n];
+                  T[b][c][m][d] = sum;
+                }
+        double coupling[GeometryInfo<dim>::vertices_per_cell][dim];
+        double volumetric[GeometryInfo<dim>::vertices_per_cell][dim];
+        if (mean_dilatation)
+          for (unsigned int a = 0; a < n_vertices; ++a)
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                coupling[a][c]   = against_row(G[a], r.stress_by_volumetric_strain, c);
+                volumetric[a][c] = against_row(G[a], r.volumetric_stress_by_strain, c) +
+                                   r.volumetric_stress_by_volumetric_strain *
+                                     div_bar[dof[a][c]];
+              }
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const unsigned int i = dof[a][c];
+              for (unsigned int b = 0; b < n_vertices; ++b)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const unsigned int j = dof[b][d];
+                    if (j > i)
+                      continue;
+                    double k = 0;
+                    for (unsigned int m = 0; m < dim; ++m)
+                      k += G[a][m] * T[b][c][m][d];
+                    if (mean_dilatation)
+                      k += coupling[a][c] * div_bar[j] +
+                           (div_bar[i] - G[a][c]) * volumetric[b][d];
+                    scratch.matrix(i, j) += k * JxW;
+                  }
+            }
       }
     if (with_tangent)
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        for (unsigned int j = i + 1; j < n_dofs; ++j)
+      for (unsigned int i = 0; i < scratch.matrix.m(); ++i)
+        for (unsigned int j = i + 1; j < scratch.matrix.n(); ++j)
           scratch.matrix(i, j) = scratch.matrix(j, i);
   }
 

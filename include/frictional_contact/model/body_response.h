@@ -9,6 +9,7 @@
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/quadrature_history.h>
 
+#include <array>
 #include <vector>
 
 namespace FrictionalContact
@@ -90,16 +91,18 @@ namespace FrictionalContact
 
       QGauss<dim>                          quadrature;
       FEValues<dim>                        fe_values;
+      /// The dof of component c at vertex a: dof[a][c].
+      std::vector<std::array<unsigned int, dim>> dof;
       dealii::Vector<double>               u;
       std::vector<types::global_dof_index> dof_indices;
-      /// grad^s phi_i and div phi_i at each point; the cell averages of
+      /// grad N_a of the vertices' Q1 functions at each point (the shape
+      /// function of dof (a, c) is N_a e_c), and the cell averages of
       /// div phi_i.
-      std::vector<std::vector<SymmetricTensor<2, dim>>> shape_strain;
-      std::vector<std::vector<double>>                  shape_divergence;
-      std::vector<double>                               mean_divergence;
-      std::vector<MaterialResponse<dim>>                responses;
-      FullMatrix<double>                                matrix;
-      dealii::Vector<double>                            force;
+      std::vector<std::vector<Tensor<1, dim>>> vertex_gradient;
+      std::vector<double>                      mean_divergence;
+      std::vector<MaterialResponse<dim>>       responses;
+      FullMatrix<double>                       matrix;
+      dealii::Vector<double>                   force;
     };
 
     /// The responses at the points of @p cell (from the committed
