@@ -123,6 +123,11 @@ namespace FrictionalContact
                         "modulus");
           isotropic_hardening = 3. * elastic.shear_modulus * gamma / (1. - gamma);
         }
+      tangent_of_strain(elastic.bulk_modulus_3d,
+                        elastic.shear_modulus,
+                        0.,
+                        SymmetricTensor<2, 3>(),
+                        elastic_response);
     }
 
 
@@ -180,38 +185,70 @@ namespace FrictionalContact
         }
       if (!with_tangent)
         return;
-
-      // The consistent tangent of the 3D stress (Simo and Hughes, box 3.2),
-      // then by the chain rule through the 3D strain
-      // dev(embed(epsilon)) + theta/3 I.
-      const SymmetricTensor<4, 3> deviatoric_projection =
-        identity_tensor<3>() - outer_product(I, I) / 3.;
-      SymmetricTensor<4, 3> D = kappa * outer_product(I, I);
-      if (step > 0)
+      if (step == 0)
         {
-          const double theta = 1. - 2. * mu * step / norm;
-          const double theta_bar =
-            1. / (1. + (isotropic_hardening + kinematic_hardening) / (3. * mu)) -
-            (1. - theta);
-          D += 2. * mu * theta * deviatoric_projection -
-               2. * mu * theta_bar * outer_product(n, n);
+          response.stress_by_strain                       = elastic_response.stress_by_strain;
+          response.stress_by_volumetric_strain            = elastic_response.stress_by_volumetric_strain;
+          response.volumetric_stress_by_strain            = elastic_response.volumetric_stress_by_strain;
+          response.volumetric_stress_by_volumetric_strain =
+            elastic_response.volumetric_stress_by_volumetric_strain;
+          return;
         }
-      else
-        D += 2. * mu * deviatoric_projection;
+      // The consistent tangent of the radial return (Simo and Hughes, box
+      // 3.2): kappa I (x) I + 2 mu theta P_dev - 2 mu theta_bar n (x) n.
+      const double theta = 1. - 2. * mu * step / norm;
+      const double theta_bar =
+        1. / (1. + (isotropic_hardening + kinematic_hardening) / (3. * mu)) - (1. - theta);
+      tangent_of_strain(kappa, mu * theta, -2. * mu * theta_bar, n, response);
+    }
 
-      const Tensor3 D_trace = D * I; // D_ijaa
-      const Tensor3 trace_D = I * D; // D_aakl
-      const double  trace_D_trace = I * D_trace;
+
+
+    template <int dim>
+    void
+    J2Plasticity<dim>::tangent_of_strain(const double                 kappa,
+                                         const double                 mu,
+                                         const double                 flow,
+                                         const SymmetricTensor<2, 3> &n,
+                                         MaterialResponse<dim>       &response) const
+    {
+      // D = kappa I (x) I + 2 mu P_dev + flow n (x) n on the 3D strain, then
+      // the chain rule through dev(embed(epsilon)) + theta/3 I: with
+      // D_t = D : I / 3 (the part of the volumetric strain),
+      // d sigma/d epsilon = D - D_t (x) I, d sigma/d theta = D_t,
+      // d pi/d epsilon = (I : D - 3 I : D_t I) / 3 on the deviator,
+      // d pi/d theta = I : D_t / 3.
+      double D[3][3][3][3];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int l = 0; l < 3; ++l)
+              D[i][j][k][l] = (i == j && k == l ? kappa - 2. * mu / 3. : 0.) +
+                              mu * ((i == k && j == l ? 1. : 0.) +
+                                    (i == l && j == k ? 1. : 0.)) +
+                              flow * n[i][j] * n[k][l];
+      double D_trace[3][3], trace_D[3][3], trace_D_trace = 0;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            D_trace[i][j] = D[i][j][0][0] + D[i][j][1][1] + D[i][j][2][2];
+            trace_D[i][j] = D[0][0][i][j] + D[1][1][i][j] + D[2][2][i][j];
+          }
+      for (unsigned int i = 0; i < 3; ++i)
+        trace_D_trace += D_trace[i][i];
       for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
+        for (unsigned int j = 0; j < dim; ++j)
           {
             for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int l = k; l < dim; ++l)
+              for (unsigned int l = 0; l < dim; ++l)
                 response.stress_by_strain[i][j][k][l] =
                   D[i][j][k][l] - (k == l ? D_trace[i][j] / 3. : 0.);
-            response.stress_by_volumetric_strain[i][j] = D_trace[i][j] / 3.;
-            response.volumetric_stress_by_strain[i][j] =
-              (trace_D[i][j] - (i == j ? trace_D_trace / 3. : 0.)) / 3.;
+            if (j >= i)
+              {
+                response.stress_by_volumetric_strain[i][j] = D_trace[i][j] / 3.;
+                response.volumetric_stress_by_strain[i][j] =
+                  (trace_D[i][j] - (i == j ? trace_D_trace / 3. : 0.)) / 3.;
+              }
           }
       response.volumetric_stress_by_volumetric_strain = trace_D_trace / 9.;
     }

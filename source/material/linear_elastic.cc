@@ -18,6 +18,22 @@ namespace FrictionalContact
       declare_parameters(ParameterHandler &)
       {}
 
+      void
+      parse_parameters(const BodyEntries &material, const BodyEntries &own) override
+      {
+        MaterialModel<dim>::parse_parameters(material, own);
+        // sigma = 2 G (epsilon - tr(epsilon) I / dim) + K theta I.
+        const ElasticConstants<dim> &elastic = this->elastic();
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                tangent[i][j][k][l] =
+                  elastic.shear_modulus * ((i == k && j == l ? 1. : 0.) +
+                                           (i == l && j == k ? 1. : 0.) -
+                                           (i == j && k == l ? 2. / dim : 0.));
+      }
+
       bool
       is_linear() const override
       {
@@ -40,14 +56,16 @@ namespace FrictionalContact
         response.at_yield            = false;
         if (!with_tangent)
           return;
-        // sigma = 2 G (epsilon - tr(epsilon) I / dim) + K theta I.
-        const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
-        response.stress_by_strain =
-          2. * elastic.shear_modulus * (identity_tensor<dim>() - outer_product(I, I) / dim);
-        response.stress_by_volumetric_strain            = elastic.bulk_modulus * I;
+        response.stress_by_strain = tangent;
+        response.stress_by_volumetric_strain =
+          elastic.bulk_modulus * unit_symmetric_tensor<dim>();
         response.volumetric_stress_by_strain            = SymmetricTensor<2, dim>();
         response.volumetric_stress_by_volumetric_strain = elastic.bulk_modulus;
       }
+
+    private:
+      /// d sigma / d epsilon, the same at every point.
+      Tensor<4, dim> tangent;
     };
 
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(

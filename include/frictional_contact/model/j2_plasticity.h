@@ -69,6 +69,19 @@ namespace FrictionalContact
       std::string
       describe() const override;
 
+      /// The derivatives of the response for the 3D tangent kappa I (x) I +
+      /// 2 mu P_dev + flow n (x) n of the strain, by the chain rule through
+      /// the strain of the element.
+      void
+      tangent_of_strain(const double                 kappa,
+                        const double                 mu,
+                        const double                 flow,
+                        const SymmetricTensor<2, 3> &n,
+                        MaterialResponse<dim>       &response) const;
+
+      /// The derivatives at an elastic point, the same everywhere.
+      MaterialResponse<dim> elastic_response;
+
       /// sigma_y: the uniaxial (von Mises) yield stress before hardening.
       double yield_stress = 0;
       /// H_iso and H_kin: the slopes of the uniaxial stress against the

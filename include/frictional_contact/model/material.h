@@ -169,7 +169,9 @@ namespace FrictionalContact
     SymmetricTensor<2, dim> stress;
     double                  volumetric_stress   = 0;
     double                  out_of_plane_stress = 0;
-    SymmetricTensor<4, dim> stress_by_strain;
+    /// All dim^4 components (with the minor symmetries): the element reads
+    /// them by index, which a SymmetricTensor makes slow.
+    Tensor<4, dim>          stress_by_strain;
     SymmetricTensor<2, dim> stress_by_volumetric_strain;
     SymmetricTensor<2, dim> volumetric_stress_by_strain;
     double                  volumetric_stress_by_volumetric_strain = 0;
