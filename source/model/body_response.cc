@@ -242,9 +242,89 @@ namespace FrictionalContact
 
 
   template <int dim>
+  types::global_dof_index
+  BodyResponse<dim>::update_tangent(const Vector                    &u_ghosted,
+                                    const AffineConstraints<double> &constraints,
+                                    Vector                          &force,
+                                    TrilinosWrappers::SparseMatrix  &matrix)
+  {
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    const unsigned int     n_cells = dof_handler.get_triangulation().n_active_cells();
+    // A cell whose points are all elastic now and were at the last tangent
+    // adds the same (elastic) matrix: only the others are taken out at the
+    // last tangent's displacement and put in at this one.
+    const bool changed_cells_only = tangent_at.size() > 0 && elastic_cells.size() == n_cells;
+    if (!changed_cells_only)
+      {
+        elastic_cells.assign(n_cells, 0);
+        tangent_at.reinit(u_ghosted);
+        matrix = 0;
+      }
+    CellScratch        scratch(dof_handler.get_fe());
+    FullMatrix<double> before(scratch.matrix.m(), scratch.matrix.n());
+    force = 0;
+    types::global_dof_index plastic_points = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int c = cell->active_cell_index();
+          const bool b_bar     = materials.of(cell->material_id()).elastic().mean_dilatation;
+          evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
+          bool elastic = true;
+          for (const MaterialResponse<dim> &r : scratch.responses)
+            {
+              plastic_points += r.plastic ? 1 : 0;
+              elastic = elastic && !r.plastic;
+            }
+          cell->get_dof_indices(scratch.dof_indices);
+          if (changed_cells_only && elastic && elastic_cells[c])
+            {
+              cell_force_and_tangent(b_bar, false, scratch);
+              constraints.distribute_local_to_global(scratch.force,
+                                                     scratch.dof_indices,
+                                                     force);
+              continue;
+            }
+          if (changed_cells_only)
+            {
+              evaluate_cell(cell, tangent_at, true, scratch, nullptr);
+              cell_force_and_tangent(b_bar, true, scratch);
+              before = scratch.matrix;
+              evaluate_cell(cell, u_ghosted, true, scratch, nullptr);
+            }
+          else
+            evaluate_cell(cell, u_ghosted, true, scratch, nullptr);
+          cell_force_and_tangent(b_bar, true, scratch);
+          if (changed_cells_only)
+            scratch.matrix.add(-1., before);
+          constraints.distribute_local_to_global(
+            scratch.matrix, scratch.force, scratch.dof_indices, matrix, force);
+          elastic_cells[c] = elastic;
+        }
+    force.compress(VectorOperation::add);
+    matrix.compress(VectorOperation::add);
+    tangent_at = u_ghosted;
+    return Utilities::MPI::sum(plastic_points, body.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::forget_tangent()
+  {
+    elastic_cells.clear();
+    tangent_at.clear();
+  }
+
+
+
+  template <int dim>
   void
   BodyResponse<dim>::commit(const Vector &u_ghosted)
   {
+    // The matrix was the tangent of the history now replaced.
+    forget_tangent();
     if (!history.active())
       return;
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();

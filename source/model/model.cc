@@ -275,6 +275,7 @@ namespace FrictionalContact
   Model<dim>::assemble()
   {
     body->assemble();
+    response->forget_tangent();
     held_by_contact_alone.clear();
     const std::map<std::string, types::material_id> &all = bodies;
     for (const types::material_id id : body->bodies_free_to_move())
@@ -303,10 +304,10 @@ namespace FrictionalContact
   Model<dim>::update_tangent(const TrilinosWrappers::MPI::Vector &u_ghosted,
                              TrilinosWrappers::MPI::Vector       &force)
   {
-    return response->internal_force(u_ghosted,
-                                     body->get_constraints(),
-                                     force,
-                                     &body->matrix_for_tangent());
+    return response->update_tangent(u_ghosted,
+                                    body->get_constraints(),
+                                    force,
+                                    body->matrix_for_tangent());
   }
 
 

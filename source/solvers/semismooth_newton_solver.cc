@@ -22,9 +22,11 @@ namespace FrictionalContact
     bool
     impose_node_conditions(const IncrementalProblem<dim>     &problem,
                            const std::vector<NodeCondition> &conditions,
-                           TrilinosWrappers::MPI::Vector    &du)
+                           TrilinosWrappers::MPI::Vector    &du,
+                           double                           &largest_move)
     {
       bool any_slip = false;
+      largest_move  = 0;
       for (unsigned int j = 0; j < conditions.size(); ++j)
         {
           if (conditions[j] == NodeCondition::none)
@@ -35,6 +37,7 @@ namespace FrictionalContact
           if (conditions[j] == NodeCondition::all_fixed)
             for (unsigned int d = 1; d < dim; ++d)
               target[d] = problem.obstacle_slip[j][d];
+          largest_move = std::max(largest_move, (target - current).norm());
           problem.contact.add_reaction(j, target - current, du);
           if (conditions[j] == NodeCondition::normal_fixed)
             any_slip = true;
@@ -217,9 +220,11 @@ namespace FrictionalContact
                      TrilinosWrappers::MPI::Vector      &w)
     {
       const StiffnessOperator &K = problem.stiffness;
+      const MPI_Comm           comm = du.get_mpi_communicator();
+      double                   moved = 0;
       const bool any_slip = Utilities::MPI::logical_or(
-        impose_node_conditions(problem, sets.conditions, du) && friction,
-        du.get_mpi_communicator());
+        impose_node_conditions(problem, sets.conditions, du, moved) && friction,
+        comm);
       const ContactStiffness<dim> A(K,
                                     P,
                                     problem.contact,
@@ -228,9 +233,13 @@ namespace FrictionalContact
                                     sets.robin,
                                     any_slip,
                                     problem.contact_held.stabilization);
-      // For a nonlinear law the tangent is made here, where du meets the
-      // node conditions.
-      problem.internal_force(du, K_du, /*with_tangent=*/true);
+      // K du at du_D. A nonlinear law's N(du) and tangent were made at the
+      // iterate (search_along_step()): evaluated again only where the node
+      // conditions moved it by more than round-off.
+      if (problem.nonlinear == nullptr ||
+          Utilities::MPI::max(moved, comm) >
+            1e-14 * std::max(problem.length_scale, du.linfty_norm()))
+        problem.internal_force(du, K_du);
       rhs = problem.load;
       rhs -= K_du;
       if (any_slip)
@@ -385,7 +394,8 @@ namespace FrictionalContact
                       std::vector<Tensor<1, dim>>      &r,
                       NewtonWorkspace<dim>             &work)
     {
-      problem.internal_force(du, work.K_du);
+      // With a nonlinear law, also its tangent here for the next step.
+      problem.internal_force(du, work.K_du, /*with_tangent=*/true);
       work.scratch = work.K_du;
       work.scratch -= problem.load;
       active_reactions(problem.contact, conditions, work.scratch, r);
@@ -413,7 +423,7 @@ namespace FrictionalContact
       if (step.t < 1)
         {
           shorten_step(step.t, work.previous_du, work.previous_r, du, r);
-          problem.internal_force(du, work.K_du);
+          problem.internal_force(du, work.K_du, /*with_tangent=*/true);
           problem.contact.apply(r, work.T_r);
         }
       return step;

@@ -73,6 +73,26 @@ namespace FrictionalContact
                    Vector                          &force,
                    TrilinosWrappers::SparseMatrix  *tangent) const;
 
+    /**
+     * f_int(u) into @p force and K_T(u) into @p matrix (all constraints),
+     * for @p u_ghosted. After a first call (which assembles every cell),
+     * only the cells that flow plastically now or did at the last call are
+     * assembled again (their last contribution taken out): every other
+     * cell adds its elastic matrix, which does not change. Valid while the
+     * history and the mesh stay: commit() and forget_tangent() start anew.
+     * Returns the points that flow plastically. Collective.
+     */
+    types::global_dof_index
+    update_tangent(const Vector                    &u_ghosted,
+                   const AffineConstraints<double> &constraints,
+                   Vector                          &force,
+                   TrilinosWrappers::SparseMatrix  &matrix);
+
+    /// The matrix is no longer the last tangent (K assembled anew, a new
+    /// mesh): the next update_tangent() assembles every cell.
+    void
+    forget_tangent();
+
     /// Makes the history of u (an accepted increment's) the committed one.
     void
     commit(const Vector &u_ghosted);
@@ -123,5 +143,10 @@ namespace FrictionalContact
     const ElasticBody<dim>  &body;
     const Materials<dim>    &materials;
     QuadratureHistory<dim>  &history;
+    /// Of the last update_tangent(): the displacement (with ghost
+    /// entries), and which cells added their elastic matrix (by active
+    /// cell index).
+    Vector                     tangent_at;
+    std::vector<unsigned char> elastic_cells;
   };
 } // namespace FrictionalContact
