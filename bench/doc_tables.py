@@ -270,7 +270,33 @@ def same_solutions(root):
                      for scene, row in body.items()])
 
 
+def step42(root):
+    """bench/step42.py: step-42 and our program on the same meshes, the
+    last row of each (mesh, ranks, program, element)."""
+    latest = {}
+    for r in rows(root, "step42.csv"):
+        latest[(r["mesh"], int(r["cells_per_edge"]), int(r["ranks"]), r["program"],
+                r["element"])] = r
+    body = []
+    for key in sorted(latest, key=lambda k: (k[0], k[1], k[2], k[3] != "step-42", k[4])):
+        r = latest[key]
+        step42_row = latest.get(key[:3] + ("step-42", "standard"))
+        faster = (f"{float(step42_row['compute_s']) / float(r['compute_s']):.1f}"
+                  if step42_row and r["program"] != "step-42" else "")
+        per_step = r["newton_step_in_elastic_solves"]
+        body.append([r["mesh"], key[1], key[2], r["program"], r["element"],
+                     thousands(r["d"]), r["newton_steps"], seconds(r["compute_s"]), faster,
+                     f"{float(r['peak_mb']):.0f}" if r["peak_mb"] else "",
+                     f"{float(r['contact_force']):.4g}", r["plastic_cells"],
+                     f"{float(per_step):.2f}" if per_step else ""])
+    return markdown(["mesh", "cells per edge", "ranks", "program", "element", "d",
+                     "Newton steps", "time (no VTU)", "times faster", "peak MB per rank",
+                     "contact force", "plastic cells", "Newton step / elastic solve"],
+                    body)
+
+
 TABLES = {
+    "step42": step42,
     "same-solutions": same_solutions,
     "fclib-scenes": fclib_scenes,
     "preconditioners": preconditioners,

@@ -667,7 +667,11 @@ namespace FrictionalContact
           {
             linear_iterations =
               solve_linearized(problem, sets, P, preconditioner, linear_solver, friction,
-                               forcing_term, 0.1 * this->stop.tolerance * load_norm,
+                               forcing_term,
+                               // The stopping rule's force: p, or K du where an
+                               // obstacle drives the body without a load.
+                               0.1 * this->stop.tolerance *
+                                 std::max(load_norm, work.K_du.l2_norm()),
                                du, work.K_du, work.rhs, work.w);
           }
         catch (const SolverControl::NoConvergence &e)
