@@ -480,3 +480,15 @@ foreach(_test j2_uniaxial_isotropic j2_uniaxial_kinematic.mpirun=2)
       ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 1e-10)
   set_tests_properties(${_test}.exact PROPERTIES FIXTURES_REQUIRED ${_test})
 endforeach()
+
+# Lame's sphere and tube past first yield (elastic-perfectly plastic J2, the
+# B-bar element): stresses at the peak and residual stresses after unloading
+# within 2 % of p of Hill's closed form, the elastic-plastic radius within
+# one cell of the pressure-radius relation (check_lame_plastic.py).
+foreach(_test lame_plastic_sphere.mpirun=2 lame_plastic_tube)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  add_test(NAME ${_test}.analytic
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_lame_plastic.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 0.02)
+  set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
+endforeach()

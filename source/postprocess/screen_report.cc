@@ -78,6 +78,11 @@ namespace FrictionalContact
             << summary.count(ContactState::free) << '/'
             << summary.count(ContactState::stick) << '/'
             << summary.count(ContactState::slip) << std::endl;
+      else if (result.model.nonlinear())
+        out << ": " << solve.iterations << ' ' << iteration_name
+            << " iterations, " << solve.linear_iterations
+            << " Krylov iterations; force balance residual "
+            << Input::scientific(solve.residuals.force_balance) << std::endl;
       else
         out << ": elastic solve, " << solve.linear_iterations
             << " " << last_linear_solve << std::endl;

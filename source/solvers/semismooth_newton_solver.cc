@@ -288,9 +288,10 @@ namespace FrictionalContact
     /**
      * The stopping rule: force balance below tolerance F, penetration
      * below tolerance L, complementarity below tolerance F L, with F the
-     * larger of |p| and |K du| (a moving obstacle or tool may drive the
-     * body without any load) and L the larger of the length scale and
-     * max |du|.
+     * largest of |p|, |K du| (a moving obstacle or tool may drive the
+     * body without any load) and, for a nonlinear law, |f_int(u)| (an
+     * increment's load is a small part of the forces in the body), and L
+     * the larger of the length scale and max |du|.
      */
     template <int dim>
     bool
@@ -300,7 +301,10 @@ namespace FrictionalContact
           const TrilinosWrappers::MPI::Vector &K_du,
           const Residuals                     &res)
     {
-      const double force  = std::max(problem.load.l2_norm(), K_du.l2_norm());
+      const double force =
+        std::max({problem.load.l2_norm(),
+                  K_du.l2_norm(),
+                  problem.nonlinear != nullptr ? problem.nonlinear->force_scale() : 0.});
       const double length = std::max(problem.length_scale, du.linfty_norm());
       return res.force_balance <= tolerance * force &&
              res.penetration <= tolerance * length &&
@@ -671,7 +675,11 @@ namespace FrictionalContact
                                // The stopping rule's force: p, or K du where an
                                // obstacle drives the body without a load.
                                0.1 * this->stop.tolerance *
-                                 std::max(load_norm, work.K_du.l2_norm()),
+                                 std::max({load_norm,
+                                           work.K_du.l2_norm(),
+                                           problem.nonlinear != nullptr ?
+                                             problem.nonlinear->force_scale() :
+                                             0.}),
                                du, work.K_du, work.rhs, work.w);
           }
         catch (const SolverControl::NoConvergence &e)

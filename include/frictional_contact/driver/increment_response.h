@@ -41,6 +41,12 @@ namespace FrictionalContact
       return plastic;
     }
 
+    double
+    force_scale() const override
+    {
+      return scale;
+    }
+
   private:
     /// f_int(u) into force for u = u_0 + @p du_in_u (the tangent too if
     /// asked).
@@ -52,5 +58,6 @@ namespace FrictionalContact
     const Vector            start;
     Vector                  force_at_start, u, u_ghosted, force, du_in_u;
     types::global_dof_index plastic = 0;
+    double                  scale   = 0;
   };
 } // namespace FrictionalContact
