@@ -40,7 +40,7 @@ namespace FrictionalContact
     else
       plastic = model.get_response().internal_force(
         u_ghosted, model.get_body().get_constraints(), force, nullptr);
-    scale = force.l2_norm();
+    scale = model.get_response().element_force_norm();
   }
 
 

@@ -215,6 +215,7 @@ namespace FrictionalContact
     if (tangent != nullptr)
       *tangent = 0;
     types::global_dof_index plastic_points = 0;
+    double                  element_forces = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -224,6 +225,7 @@ namespace FrictionalContact
           cell_force_and_tangent(materials.of(cell->material_id()).elastic().mean_dilatation,
                                  tangent != nullptr,
                                  scratch);
+          element_forces += scratch.force.norm_sqr();
           cell->get_dof_indices(scratch.dof_indices);
           if (tangent != nullptr)
             distribute.distribute_local_to_global(
@@ -236,6 +238,8 @@ namespace FrictionalContact
     force.compress(VectorOperation::add);
     if (tangent != nullptr)
       tangent->compress(VectorOperation::add);
+    element_force_size =
+      std::sqrt(Utilities::MPI::sum(element_forces, body.get_mpi_communicator()));
     return Utilities::MPI::sum(plastic_points, body.get_mpi_communicator());
   }
 
@@ -264,6 +268,7 @@ namespace FrictionalContact
     FullMatrix<double> before(scratch.matrix.m(), scratch.matrix.n());
     force = 0;
     types::global_dof_index plastic_points = 0;
+    double                  element_forces = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -280,6 +285,7 @@ namespace FrictionalContact
           if (changed_cells_only && elastic && elastic_cells[c])
             {
               cell_force_and_tangent(b_bar, false, scratch);
+              element_forces += scratch.force.norm_sqr();
               constraints.distribute_local_to_global(scratch.force,
                                                      scratch.dof_indices,
                                                      force);
@@ -295,6 +301,7 @@ namespace FrictionalContact
           else
             evaluate_cell(cell, u_ghosted, true, scratch, nullptr);
           cell_force_and_tangent(b_bar, true, scratch);
+          element_forces += scratch.force.norm_sqr();
           if (changed_cells_only)
             scratch.matrix.add(-1., before);
           constraints.distribute_local_to_global(
@@ -304,6 +311,8 @@ namespace FrictionalContact
     force.compress(VectorOperation::add);
     matrix.compress(VectorOperation::add);
     tangent_at = u_ghosted;
+    element_force_size =
+      std::sqrt(Utilities::MPI::sum(element_forces, body.get_mpi_communicator()));
     return Utilities::MPI::sum(plastic_points, body.get_mpi_communicator());
   }
 

@@ -446,6 +446,9 @@ namespace FrictionalContact
             increment[dof] = value;
       }
     increment.compress(VectorOperation::insert);
+    // A hanging vertex on a prescribed boundary is no prescribed dof: it
+    // moves with the vertices it hangs from.
+    hanging_node_constraints.distribute(increment);
   }
 
 

@@ -88,6 +88,16 @@ namespace FrictionalContact
                    Vector                          &force,
                    TrilinosWrappers::SparseMatrix  &matrix);
 
+    /// sqrt(sum over the cells of |f_e|^2) of the last internal_force() or
+    /// update_tangent(): the size of the forces in the bodies, which
+    /// self-equilibrated stresses (after unloading) leave large where
+    /// f_int itself vanishes.
+    double
+    element_force_norm() const
+    {
+      return element_force_size;
+    }
+
     /// The matrix is no longer the last tangent (K assembled anew, a new
     /// mesh): the next update_tangent() assembles every cell.
     void
@@ -148,5 +158,7 @@ namespace FrictionalContact
     /// cell index).
     Vector                     tangent_at;
     std::vector<unsigned char> elastic_cells;
+    /// See element_force_norm().
+    mutable double element_force_size = 0;
   };
 } // namespace FrictionalContact

@@ -116,8 +116,10 @@ namespace FrictionalContact
 
     /**
      * The increment of the prescribed displacements from time @p t_old to
-     * @p t_new, at the prescribed dofs, zero elsewhere (the lifting of an
-     * increment; the solves then work with homogeneous constraints).
+     * @p t_new, at the prescribed dofs (and at hanging vertices on their
+     * boundaries, from the vertices they hang from), zero elsewhere (the
+     * lifting of an increment; the solves then work with homogeneous
+     * constraints).
      */
     void
     prescribed_increment(const double t_old,

@@ -27,9 +27,10 @@ namespace FrictionalContact
     virtual void
     internal_force_change(const Vector &du, Vector &dst, const bool with_tangent) = 0;
 
-    /// |f_int(u_0 + du)| of the last evaluation: the size of the forces
-    /// in the body, which the stopping rule measures the force balance
-    /// against (an increment's N(du) and load may be much smaller).
+    /// The size of the forces in the body at the last evaluation (its
+    /// elements' forces, which self-equilibrated stresses keep large where
+    /// f_int vanishes), which the stopping rule measures the force balance
+    /// against: an increment's N(du) and load may be much smaller.
     virtual double
     force_scale() const = 0;
 

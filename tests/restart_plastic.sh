@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Restart with a plastic history: step-42's indentation
+# (parameters/step42_indentation.prm) pressed in two increments and lifted
+# in two, the mesh adapted in every increment (the history of the
+# quadrature points goes with the cells), run once without interruption;
+# run again, killed once two increments are in its statistics, and resumed
+# on 2 MPI ranks (the history comes back from the checkpoint, on another
+# partition). The resumed run must end where the uninterrupted one did:
+# the same residual impression (displacements at every vertex) and the same
+# plastic strain in every cell, to 1e-6 of their largest values.
+# usage: restart_plastic.sh <contact> <source dir> <python3>
+set -u
+if [ $# -ne 3 ]; then
+  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+  [ "${1:-}" = "--help" ] && exit 0 || exit 2
+fi
+contact=$1; source_dir=$2; python=$3
+fail() { echo "*** $1"; exit 1; }
+rm -rf out-whole out-killed
+for name in whole killed; do
+  cat > $name.prm <<EOT
+include $source_dir/parameters/step42_indentation.prm
+set Output directory = out-$name
+subsection Geometry
+  subsection Box
+    set X repetitions = 6
+    set Y repetitions = 6
+    set Z repetitions = 6
+  end
+end
+subsection Mesh refinement
+  set Cycles = 1
+  set Maximum dofs = 6000                   # refined twice, then no more
+end
+subsection Contact
+  subsection Obstacle
+    set Rigid displacement = 0; 0; -0.005 * min(t, 4 - t)
+  end
+end
+subsection Loading
+  set End time = 4
+  set Number of increments = 4
+end
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+    set Write csv tables = true
+  end
+end
+EOT
+done
+printf "include killed.prm\nset Resume computation = true\n" > resume.prm
+
+"$contact" whole.prm > whole.log 2>&1 &
+whole=$!
+"$source_dir/tests/kill_when.sh" 2 out-killed/statistics killed.log "$contact" killed.prm \
+  || fail "could not kill the run"
+wait $whole || { cat whole.log; fail "the uninterrupted run failed"; }
+grep -q "mesh refinement 1" whole.log || fail "the mesh was not adapted"
+mpirun -np 2 "$contact" resume.prm > resume.log 2>&1 || { cat resume.log; fail "resuming failed"; }
+grep "Resuming after increment" resume.log || fail "the run did not resume"
+
+"$python" "$source_dir/tests/compare_csv.py" out-whole/displacement-00004.csv \
+  out-killed/displacement-00004.csv --keys x,y,z --columns ux,uy,uz \
+  --tolerance 1e-6 || fail "the residual displacements differ"
+"$python" "$source_dir/tests/compare_csv.py" out-whole/stress-00004.csv \
+  out-killed/stress-00004.csv --keys x,y,z \
+  --columns equivalent_plastic_strain,epxx,epyy,epzz,epxy,epxz,epyz \
+  --tolerance 1e-6 || fail "the plastic strains differ"
+"$python" - out-whole/stress-00004.csv <<'PY' || fail "nothing stayed plastic"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+plastic = sum(1 for r in rows if float(r["equivalent_plastic_strain"]) > 0)
+print(f"{plastic} of {len(rows)} cells keep a plastic strain after unloading")
+sys.exit(0 if plastic > 0 else 1)
+PY
+echo "the resumed run ends with the plastic history of the uninterrupted one"
