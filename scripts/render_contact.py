@@ -2,8 +2,10 @@
 """Renders a run's output with ParaView: one PNG per chosen time with three
 views side by side,
 
-  1. the deformed body coloured by the von Mises stress, with the obstacle
-     (or the rigid tool, from tool.pvd) drawn at its position at that time;
+  1. the deformed body coloured by the von Mises stress (by the equivalent
+     plastic strain where it flowed plastically), in 3D cut through the
+     middle of its contact zone, with the obstacle (or the rigid tool, from
+     tool.pvd) drawn at its position at that time;
   2. the contact face (the faces whose vertices are all contact candidates)
      coloured by the contact pressure, seen from the obstacle;
   3. the same face coloured by the contact state (0 free, 1 stick, 2 slip).
@@ -240,11 +242,27 @@ def main():
         layout.AssignView(cell, view)
         views.append(view)
 
-    body = simple.Show(warped, views[0])
-    simple.ColorBy(body, ("POINTS", "von_mises_stress"))
+    # In 3D the body cut through the middle of its contact zone (the plane
+    # y = const, the far half kept): what happens under the contact shows.
+    # A body that flowed plastically is coloured by its equivalent plastic
+    # strain, another by the von Mises stress.
+    cut = None
+    if dim == 3:
+        cut = simple.Clip(Input=warped)
+        cut.ClipType = "Plane"
+        cut.ClipType.Normal = [0, 1, 0]
+        cut.Crinkleclip = 0
+        cut.Invert = 0
+    field, field_title = "von_mises_stress", "von Mises stress"
+    reader.UpdatePipeline(max(reader.TimestepValues) if reader.TimestepValues else 0)
+    plastic = reader.PointData.GetArray("equivalent_plastic_strain")
+    if plastic is not None and plastic.GetRange()[1] > 0:
+        field, field_title = "equivalent_plastic_strain", "equivalent plastic strain"
+    body = simple.Show(cut if cut is not None else warped, views[0])
+    simple.ColorBy(body, ("POINTS", field))
     body.SetScalarBarVisibility(views[0], True)
-    simple.GetScalarBar(simple.GetColorTransferFunction("von_mises_stress"),
-                        views[0]).Title = "von Mises stress"
+    simple.GetScalarBar(simple.GetColorTransferFunction(field),
+                        views[0]).Title = field_title
     pressure = simple.Show(face, views[1])
     simple.ColorBy(pressure, ("POINTS", "contact_pressure"))
     pressure.SetScalarBarVisibility(views[1], True)
@@ -268,7 +286,7 @@ def main():
             display.LineWidth = 12
             display.RenderLinesAsTubes = 1
     # Legends below the pictures, not over them.
-    for function, view in ((simple.GetColorTransferFunction("von_mises_stress"), views[0]),
+    for function, view in ((simple.GetColorTransferFunction(field), views[0]),
                            (simple.GetColorTransferFunction("contact_pressure"), views[1]),
                            (state_lut, views[2])):
         bar = simple.GetScalarBar(function, view)
@@ -310,6 +328,10 @@ def main():
         touching.UpdatePipeline(t)
         zone = face.GetDataInformation().GetBounds() \
             if face.GetDataInformation().GetNumberOfCells() > 0 else bounds
+        if cut is not None:
+            middle = touching.GetDataInformation().GetBounds() \
+                if touching.GetDataInformation().GetNumberOfCells() > 0 else bounds
+            cut.ClipType.Origin = [0, 0.5 * (middle[2] + middle[3]), 0]
         if touching.GetDataInformation().GetNumberOfCells() > 0:
             inner = touching.GetDataInformation().GetBounds()
             zone = [f(z, i + s * 0.5 * (inner[2 * k + 1] - inner[2 * k]))

@@ -289,6 +289,13 @@ namespace FrictionalContact
     const IncrementOutcome<dim> &outcome = result.outcome;
     if (!(all || increments.count(result.increment) > 0) || !outcome.problem)
       return;
+    if (outcome.problem->nonlinear != nullptr)
+      throw InputError(
+        "<Postprocess/FCLIB export>: increment " + std::to_string(result.increment) +
+        " is not a linear problem (a body has <Material/Model> = J2 "
+        "plasticity), which an FCLIB file holds (M = K): export increments "
+        "of linear elastic scenes, or remove fclib export from <Postprocess/"
+        "List of postprocessors>");
     FclibProblem fclib = to_fclib(*outcome.problem, result.model.get_contact());
     fclib.title = "frictional_contact increment " + std::to_string(result.increment);
     fclib.description =
