@@ -295,7 +295,24 @@ def step42(root):
                     body)
 
 
+def linear_speed(root):
+    """bench/linear_speed.py: linear elastic scenes with two builds, the
+    last pair of rows of each scene."""
+    latest = {}
+    for r in rows(root, "linear-speed.csv"):
+        latest.setdefault(r["scene"], {})[r["version"]] = r
+    body = []
+    for scene, versions in latest.items():
+        for version, r in versions.items():
+            body.append([scene, r["ranks"], version, thousands(r["d"]),
+                         r["newton_iterations"], seconds(r["wall_s"]),
+                         f"{float(r['peak_mb']):.0f}", r["largest_force_difference"]])
+    return markdown(["scene", "ranks", "version", "d", "Newton steps", "time",
+                     "peak MB per rank", "forces differ by"], body)
+
+
 TABLES = {
+    "linear-speed": linear_speed,
     "step42": step42,
     "same-solutions": same_solutions,
     "fclib-scenes": fclib_scenes,
@@ -371,7 +388,42 @@ def multigrid_against_ml(root):
             f"{ml['newton_iterations']} and {ml['contact_krylov_iterations']})")
 
 
+def step42_goals(root):
+    """The goals of elasto-plastic bodies from bench/step42.py's CSV: times
+    faster than step-42 at d >= 100k per element and rank count, Newton
+    steps against step-42's, the Newton step in elastic solves, and the
+    memory per rank of the plastic scene at d >= 1M against the elastic."""
+    latest = {}
+    for r in rows(root, "step42.csv"):
+        latest[(r["mesh"], int(r["cells_per_edge"]), int(r["ranks"]), r["program"],
+                r["element"])] = r
+    parts = []
+    for element in ("standard", "B-bar"):
+        ratios = []
+        for (mesh, edge, ranks, program, el), r in sorted(latest.items()):
+            ref = latest.get((mesh, edge, ranks, "step-42", "standard"))
+            if mesh == "global" and program == "contact" and el == element and ref \
+                    and int(ref["d"]) >= 100000:
+                ratios.append((edge, ranks, float(ref["compute_s"]) / float(r["compute_s"]),
+                               int(r["newton_steps"]), int(ref["newton_steps"])))
+        parts.append(f"{element} element " + ", ".join(
+            f"{t:.1f} ({e}^3, {k} rank{'s' if k > 1 else ''}, {n} Newton steps against {m})"
+            for e, k, t, n, m in ratios))
+    steps = [float(r["newton_step_in_elastic_solves"]) for r in latest.values()
+             if r["program"] == "contact" and r["newton_step_in_elastic_solves"]]
+    large = {r["program"]: r for k, r in latest.items() if k[0] == "global" and int(r["d"]) >= 1000000}
+    memory = ""
+    if "contact" in large and "contact, elastic" in large:
+        a, b = large["contact"], large["contact, elastic"]
+        memory = (f"; at d = {thousands(a['d'])} on {a['ranks']} ranks the plastic scene "
+                  f"took {float(a['peak_mb']):.0f} MB per rank, the elastic one "
+                  f"{float(b['peak_mb']):.0f} MB ({float(a['peak_mb']) / float(b['peak_mb']):.2f} times)")
+    return ("times faster than step-42: " + "; ".join(parts) +
+            f"; a Newton step costs {min(steps):.2f} to {max(steps):.2f} elastic solves" + memory)
+
+
 QUOTES = {
+    "step42-goals": step42_goals,
     "nearly-incompressible-errors": nearly_incompressible_errors,
     "multigrid-1.6m": multigrid_largest_ml,
     "multigrid-1.6m-against-ml": multigrid_against_ml,

@@ -522,3 +522,13 @@ add_test(NAME j2_uniaxial_adaptive.exact
     --tolerance 1e-10)
 set_tests_properties(j2_uniaxial_adaptive.exact PROPERTIES FIXTURES_REQUIRED
   j2_uniaxial_adaptive)
+
+# The residual impression of step-42's indentation, pressed and lifted, on
+# 6, 12 and 24 cells per edge: a permanent dent that converges with the
+# mesh (residual_impression.sh).
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
+add_test(NAME residual_impression
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/residual_impression.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
+set_tests_properties(residual_impression PROPERTIES ENVIRONMENT "${_environment}")
