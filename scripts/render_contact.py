@@ -338,9 +338,23 @@ def main():
                     for k in range(3)
                     for f, z, i, s in ((max, zone[2 * k], inner[2 * k], -1),
                                        (min, zone[2 * k + 1], inner[2 * k + 1], 1))]
+        # View 1 of a 3D body: around the contact zone (three times its size,
+        # within the body) where that is much smaller than the body, so that
+        # what happens under the contact fills the picture.
+        whole = bounds
+        if dim == 3 and touching.GetDataInformation().GetNumberOfCells() > 0:
+            inner = touching.GetDataInformation().GetBounds()
+            size = max(inner[1] - inner[0], inner[3] - inner[2], inner[5] - inner[4])
+            body_size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+            if 3 * size < body_size:
+                whole = []
+                for k in range(3):
+                    middle = 0.5 * (inner[2 * k] + inner[2 * k + 1])
+                    whole += [max(bounds[2 * k], middle - 1.5 * size),
+                              min(bounds[2 * k + 1], middle + 1.5 * size)]
         for i, view in enumerate(views):
             view.InteractionMode = "2D" if dim == 2 else "3D"
-            box = bounds if i == 0 else zone
+            box = whole if i == 0 else zone
             centre = [0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]),
                       0.5 * (box[4] + box[5])]
             extent = max(box[1] - box[0], box[3] - box[2], box[5] - box[4], 1e-9)
@@ -355,11 +369,19 @@ def main():
                                        centre[2] + 1.5 * extent]
                 view.CameraViewUp = [0, 0, 1]
             else:
-                # The contact zone seen from below (the obstacle's side for
-                # the shipped scenes, which press down).
-                view.CameraPosition = [centre[0], centre[1], box[4] - 10 * extent]
-                view.CameraViewUp = [0, 1, 0]
-            if i == 0 and dim == 3:
+                # The contact zone seen along its thinnest axis (its normal),
+                # from below (the obstacle's side for scenes that press down).
+                normal_axis = min(range(3), key=lambda k: box[2 * k + 1] - box[2 * k])
+                up_axis = 1 if normal_axis == 2 else 2
+                position = list(centre)
+                position[normal_axis] = box[2 * normal_axis] - 10 * extent
+                view.CameraPosition = position
+                view.CameraViewUp = [1 if k == up_axis else 0 for k in range(3)]
+            if i == 0 and dim == 3 and whole is not bounds:
+                # The zoom on the contact zone, from the same side.
+                view.CameraParallelProjection = 1
+                view.CameraParallelScale = 0.6 * extent
+            elif i == 0 and dim == 3:
                 simple.ResetCamera(view)
                 # Back off a little and lift the body above the legend.
                 camera = view.GetActiveCamera()
@@ -374,12 +396,14 @@ def main():
                 # the panels are as wide as high.
                 view.CameraParallelProjection = 1
                 view.CameraParallelScale = 0.7 * extent
-                # Screen up is +y in these views: moving the focal point
-                # down moves the picture up, above the legend.
-                low = [centre[0], centre[1] - 0.12 * extent, centre[2]]
-                position = list(view.CameraPosition)
+                # Moving the focal point down the screen's up axis moves
+                # the picture up, above the legend.
+                up = list(view.CameraViewUp)
+                low = [c - 0.12 * extent * u for c, u in zip(centre, up)]
+                position = [p - 0.12 * extent * u
+                            for p, u in zip(view.CameraPosition, up)]
                 view.CameraFocalPoint = low
-                view.CameraPosition = [low[0], low[1], position[2]]
+                view.CameraPosition = position
         single = len(chosen) == 1
         file_name = os.path.join(out, f"{name}.png" if single else
                                  f"{name}-t{t:08.4f}.png")

@@ -75,7 +75,7 @@ namespace FrictionalContact
     resume_if_possible = resume_choice == "auto";
     resume             = resume_choice == "true" ||
              (resume_if_possible && checkpoint.exists());
-    postprocessors.check_increments(driver.times().size());
+    postprocessors.check_scene(driver.times().size(), model);
   }
 
 

@@ -220,8 +220,15 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  FclibExport<dim>::check_increments(const unsigned int n_increments) const
+  FclibExport<dim>::check_scene(const unsigned int n_increments,
+                                const Model<dim>  &model) const
   {
+    if (model.nonlinear())
+      throw InputError(
+        "<Postprocess/FCLIB export>: a body has a nonlinear law (<Material/"
+        "Model>), and an FCLIB file holds a linear problem (M = K): export "
+        "increments of linear elastic scenes, or remove fclib export from "
+        "<Postprocess/List of postprocessors>");
     if (!increments.empty() && *increments.rbegin() > n_increments)
       Input::fail("Postprocess/FCLIB export/Increments",
                   text,
@@ -289,13 +296,6 @@ namespace FrictionalContact
     const IncrementOutcome<dim> &outcome = result.outcome;
     if (!(all || increments.count(result.increment) > 0) || !outcome.problem)
       return;
-    if (outcome.problem->nonlinear != nullptr)
-      throw InputError(
-        "<Postprocess/FCLIB export>: increment " + std::to_string(result.increment) +
-        " is not a linear problem (a body has <Material/Model> = J2 "
-        "plasticity), which an FCLIB file holds (M = K): export increments "
-        "of linear elastic scenes, or remove fclib export from <Postprocess/"
-        "List of postprocessors>");
     FclibProblem fclib = to_fclib(*outcome.problem, result.model.get_contact());
     fclib.title = "frictional_contact increment " + std::to_string(result.increment);
     fclib.description =

@@ -105,10 +105,11 @@ namespace FrictionalContact
 
     template <int dim>
     void
-    Manager<dim>::check_increments(const unsigned int n_increments) const
+    Manager<dim>::check_scene(const unsigned int n_increments,
+                              const Model<dim>  &model) const
     {
       for (const auto &postprocessor : postprocessors)
-        postprocessor->check_increments(n_increments);
+        postprocessor->check_scene(n_increments, model);
     }
 
 

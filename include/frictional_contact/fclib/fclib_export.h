@@ -77,7 +77,8 @@ namespace FrictionalContact
     /// Throws an InputError if an increment named is past the last of a
     /// loading history of @p n_increments.
     void
-    check_increments(const unsigned int n_increments) const override;
+    check_scene(const unsigned int n_increments,
+                const Model<dim>  &model) const override;
 
     Postprocess::Columns
     execute(const Postprocess::IncrementResult<dim> &result) override;

@@ -105,9 +105,11 @@ namespace FrictionalContact
         return false;
       }
 
-      /// Throws an InputError if it cannot work with @p n_increments.
+      /// Throws an InputError if it cannot work with @p n_increments
+      /// increments of @p model (before anything is written).
       virtual void
-      check_increments(const unsigned int /*n_increments*/) const
+      check_scene(const unsigned int /*n_increments*/,
+                  const Model<dim> & /*model*/) const
       {}
 
       /// Writes what it writes for a converged increment; returns its columns.

@@ -35,7 +35,7 @@ namespace FrictionalContact
       /// Throws an InputError if a postprocessor cannot work with
       /// @p n_increments.
       void
-      check_increments(const unsigned int n_increments) const;
+      check_scene(const unsigned int n_increments, const Model<dim> &model) const;
 
       /// Every file a run of @p n_increments writes ("vtu every increment
       /// (solution/, solution.pvd), statistics, parameters.prm"), or "" if
