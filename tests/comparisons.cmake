@@ -208,6 +208,7 @@ foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
               "hertz_two_bodies_2d:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               "hertz_two_bodies_3d.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02:--profile-tolerance:0.05"
               sliding_on_elastic_base:sliding sliding_pair_friction:sliding
+              hertz_2d_finite_strain:hertz
               "hertz_3d_force.mpirun=2:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.02")
   string(REPLACE ":" ";" _case ${_case})
   list(GET _case 0 _test)
@@ -400,6 +401,14 @@ contact_compare_statistics(flat_punch_2d.rotated
   "flat_punch_rigid_2d.mpirun=2;flat_punch_rotated_2d" ${_punch}
   ${CMAKE_CURRENT_BINARY_DIR}/flat_punch_rotated_2d/output-flat_punch_rotated_2d/statistics 1e-8)
 
+# Hertz at an indentation of 1 % of the radius, neo-Hookean at finite
+# strain against linear elastic at small strain: the same contact forces
+# within 0.5 %.
+contact_compare_statistics(hertz_2d.finite_strain "hertz_2d;hertz_2d_finite_strain"
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d/output-hertz_2d/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_finite_strain/output-hertz_2d_finite_strain/statistics
+  5e-3)
+
 # The geometric multigrid path (<scene>_multigrid) and the one with K never
 # assembled (<scene>_matrix_free, Linear solver/Matrix-free stiffness)
 # against ML's: the same contact forces to the solver tolerance (1e-8
@@ -491,6 +500,18 @@ foreach(_test lame_plastic_sphere.mpirun=2 lame_plastic_tube)
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_lame_plastic.py
       ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 0.02)
   set_tests_properties(${_test}.analytic PROPERTIES FIXTURES_REQUIRED ${_test})
+endforeach()
+
+# The contact patch test at finite strain: a neo-Hookean block compressed
+# by 30 % onto a frictionless plane, its displacement, Cauchy stress, det F
+# and nominal contact pressure those of the uniaxial solution of the law
+# in every increment, to 1e-10 (check_neo_hookean.py).
+foreach(_test neo_hookean_compression_2d neo_hookean_compression_3d.mpirun=2)
+  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
+  add_test(NAME ${_test}.exact
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_neo_hookean.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 1e-10)
+  set_tests_properties(${_test}.exact PROPERTIES FIXTURES_REQUIRED ${_test})
 endforeach()
 
 # A plastic history through a kill and a resume on another rank count, the

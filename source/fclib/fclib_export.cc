@@ -223,7 +223,7 @@ namespace FrictionalContact
   FclibExport<dim>::check_scene(const unsigned int n_increments,
                                 const Model<dim>  &model) const
   {
-    if (model.nonlinear())
+    if (model.nonlinear() && writes_files())
       throw InputError(
         "<Postprocess/FCLIB export>: a body has a nonlinear law (<Material/"
         "Model>), and an FCLIB file holds a linear problem (M = K): export "

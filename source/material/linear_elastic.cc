@@ -8,7 +8,8 @@ namespace FrictionalContact
     /**
      * Linear isotropic elasticity, sigma = 2 G dev(epsilon) + K theta I
      * (ElasticConstants): no history, a stiffness that does not change, so
-     * that the body assembles K once and the solvers take it as it is.
+     * that the body assembles K once and the solvers take it as it is. At
+     * finite strain the same law of S and E: St. Venant-Kirchhoff.
      */
     template <int dim>
     class LinearElastic : public MaterialModel<dim>
@@ -36,6 +37,13 @@ namespace FrictionalContact
 
       bool
       is_linear() const override
+      {
+        return true;
+      }
+
+      /// At finite strain, S = C : E: the St. Venant-Kirchhoff law.
+      bool
+      allows_finite_strain() const override
       {
         return true;
       }

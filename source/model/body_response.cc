@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <frictional_contact/base/input.h>
 #include <frictional_contact/model/body_response.h>
 
 #include <cmath>
@@ -44,6 +45,7 @@ namespace FrictionalContact
                       std::vector<Tensor<1, dim>>(GeometryInfo<dim>::vertices_per_cell))
     , mean_divergence(fe.n_dofs_per_cell())
     , responses(quadrature.size())
+    , deformation_gradient(quadrature.size())
     , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , force(fe.n_dofs_per_cell())
   {
@@ -68,6 +70,7 @@ namespace FrictionalContact
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
     fe_values.reinit(cell);
     cell->get_dof_values(u_ghosted, scratch.u);
+    scratch.finite_strain = law.elastic().finite_strain;
 
     std::fill(scratch.mean_divergence.begin(), scratch.mean_divergence.end(), 0.);
     double volume = 0, mean_dilatation = 0;
@@ -87,7 +90,21 @@ namespace FrictionalContact
                 scratch.mean_divergence[scratch.dof[a][c]] += g[c] * JxW;
               }
           }
-        strain[q] = symmetrize(gradient);
+        if (scratch.finite_strain)
+          {
+            // E = (F^T F - I)/2 = sym(H) + H^T H / 2.
+            scratch.deformation_gradient[q] = unit_symmetric_tensor<dim>() + gradient;
+            strain[q] = symmetrize(gradient) +
+                        0.5 * symmetrize(transpose(gradient) * gradient);
+            const double jacobian = determinant(scratch.deformation_gradient[q]);
+            if (jacobian < scratch.smallest_jacobian)
+              {
+                scratch.smallest_jacobian    = jacobian;
+                scratch.smallest_jacobian_at = cell->center();
+              }
+          }
+        else
+          strain[q] = symmetrize(gradient);
         mean_dilatation += trace(strain[q]) * JxW;
       }
     for (double &d : scratch.mean_divergence)
@@ -98,7 +115,12 @@ namespace FrictionalContact
     const unsigned int  n_history = law.n_history_values();
     const double       *committed = history.values(cell);
     for (const unsigned int q : fe_values.quadrature_point_indices())
-      law.evaluate(strain[q],
+      if (scratch.finite_strain &&
+          !(determinant(scratch.deformation_gradient[q]) > 0))
+        // Inverted: no stress (refuse_inverted_cells() stops the solve).
+        scratch.responses[q] = MaterialResponse<dim>();
+      else
+        law.evaluate(strain[q],
                    b_bar ? mean_dilatation : trace(strain[q]),
                    committed == nullptr ? nullptr : committed + q * n_history,
                    with_tangent,
@@ -114,6 +136,8 @@ namespace FrictionalContact
                                             const bool   with_tangent,
                                             CellScratch &scratch) const
   {
+    if (scratch.finite_strain)
+      return finite_strain_force_and_tangent(with_tangent, scratch);
     // The shape function of dof (a, c) is N_a e_c: its symmetric gradient
     // B has the entries grad N_a in row and column c, and its divergence
     // is d N_a / d x_c, so that the contractions reduce to sums over the
@@ -203,6 +227,107 @@ namespace FrictionalContact
 
 
   template <int dim>
+  void
+  BodyResponse<dim>::finite_strain_force_and_tangent(const bool   with_tangent,
+                                                     CellScratch &scratch) const
+  {
+    // The shape function of dof (a, c) is N_a e_c, its gradient e_c (x)
+    // Grad N_a: the force is (F S)_cJ dN_a/dX_J, the material part of the
+    // matrix F_cI dN_a/dX_J C_IJKL F_dK dN_b/dX_L, the geometric part
+    // delta_cd Grad N_a . S Grad N_b.
+    const unsigned int n_vertices = scratch.dof.size();
+    const auto        &dof        = scratch.dof;
+    scratch.force                 = 0;
+    if (with_tangent)
+      scratch.matrix = 0;
+    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+      {
+        const double                 JxW = scratch.fe_values.JxW(q);
+        const MaterialResponse<dim> &r   = scratch.responses[q];
+        const auto                  &G   = scratch.vertex_gradient[q];
+        const Tensor<2, dim>        &F   = scratch.deformation_gradient[q];
+        const Tensor<2, dim>         S(r.stress);
+        const Tensor<2, dim>         P = F * S;
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            scratch.force(dof[a][c]) += (P[c] * G[a]) * JxW;
+        if (!with_tangent)
+          continue;
+        // FG[b][d] = F^T e_d (x) Grad N_b, the variation of F^T F / 2's
+        // non-symmetric part; CFG[b][d] = C : FG[b][d].
+        std::array<std::array<Tensor<2, dim>, dim>, GeometryInfo<dim>::vertices_per_cell> FG, CFG;
+        for (unsigned int b = 0; b < n_vertices; ++b)
+          for (unsigned int d = 0; d < dim; ++d)
+            FG[b][d] = outer_product(F[d], G[b]);
+        for (unsigned int b = 0; b < n_vertices; ++b)
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  double sum = 0;
+                  for (unsigned int k = 0; k < dim; ++k)
+                    sum += (r.stress_by_strain[i][j][k] * FG[b][d][k]) +
+                           r.stress_by_volumetric_strain[i][j] * FG[b][d][k][k];
+                  CFG[b][d][i][j] = sum;
+                }
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          {
+            const Tensor<1, dim> SG = S * G[a];
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const unsigned int i = dof[a][c];
+                for (unsigned int b = 0; b < n_vertices; ++b)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      const unsigned int j = dof[b][d];
+                      if (j > i)
+                        continue;
+                      double k = scalar_product(FG[a][c], CFG[b][d]);
+                      if (c == d)
+                        k += SG * G[b];
+                      scratch.matrix(i, j) += k * JxW;
+                    }
+              }
+          }
+      }
+    if (with_tangent)
+      for (unsigned int i = 0; i < scratch.matrix.m(); ++i)
+        for (unsigned int j = i + 1; j < scratch.matrix.n(); ++j)
+          scratch.matrix(i, j) = scratch.matrix(j, i);
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::refuse_inverted_cells(const CellScratch &scratch) const
+  {
+    const MPI_Comm comm     = body.get_mpi_communicator();
+    const double   smallest = Utilities::MPI::min(scratch.smallest_jacobian, comm);
+    if (smallest > 0)
+      return;
+    // The rank with the smallest det F says where (the lowest such rank).
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int owner =
+      Utilities::MPI::min(scratch.smallest_jacobian == smallest ?
+                            rank :
+                            Utilities::MPI::n_mpi_processes(comm),
+                          comm);
+    std::vector<double> where(scratch.smallest_jacobian_at.begin_raw(),
+                              scratch.smallest_jacobian_at.end_raw());
+    where = Utilities::MPI::broadcast(comm, where, owner);
+    std::string at;
+    for (const double x : where)
+      at += (at.empty() ? "(" : ", ") + Input::to_text(x);
+    throw InvertedCell("the cell at " + at + ") is inverted (det F = " +
+                      Input::to_text(smallest) +
+                      " <= 0): take smaller increments, or let them be cut "
+                      "(<Loading/On failure> = cut increment)");
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   BodyResponse<dim>::internal_force(const Vector                    &u_ghosted,
                                     const AffineConstraints<double> &distribute,
@@ -238,6 +363,7 @@ namespace FrictionalContact
     force.compress(VectorOperation::add);
     if (tangent != nullptr)
       tangent->compress(VectorOperation::add);
+    refuse_inverted_cells(scratch);
     element_force_size =
       std::sqrt(Utilities::MPI::sum(element_forces, body.get_mpi_communicator()));
     return Utilities::MPI::sum(plastic_points, body.get_mpi_communicator());
@@ -256,8 +382,11 @@ namespace FrictionalContact
     const unsigned int     n_cells = dof_handler.get_triangulation().n_active_cells();
     // A cell whose points are all elastic now and were at the last tangent
     // adds the same (elastic) matrix: only the others are taken out at the
-    // last tangent's displacement and put in at this one.
-    const bool changed_cells_only = tangent_at.size() > 0 && elastic_cells.size() == n_cells;
+    // last tangent's displacement and put in at this one. At finite strain
+    // every cell's matrix changes: all are assembled anew.
+    const bool changed_cells_only = tangent_at.size() > 0 &&
+                                    elastic_cells.size() == n_cells &&
+                                    !materials.any_finite_strain();
     if (!changed_cells_only)
       {
         elastic_cells.assign(n_cells, 0);
@@ -310,6 +439,7 @@ namespace FrictionalContact
         }
     force.compress(VectorOperation::add);
     matrix.compress(VectorOperation::add);
+    refuse_inverted_cells(scratch);
     tangent_at = u_ghosted;
     element_force_size =
       std::sqrt(Utilities::MPI::sum(element_forces, body.get_mpi_communicator()));
@@ -369,21 +499,40 @@ namespace FrictionalContact
           const MaterialModel<dim> &law       = materials.of(cell->material_id());
           const double             *committed = history.values(cell);
           CellState<dim>           &state     = states[cell->active_cell_index()];
-          double volume = 0;
-          for (unsigned int q = 0; q < n_points; ++q)
-            volume += scratch.fe_values.JxW(q);
+          // At finite strain the Cauchy stress sigma = F S F^T / J
+          // (sigma_zz = S_zz / J in plane strain), averaged over the
+          // deformed cell.
+          std::vector<double> jacobian(n_points, 1.);
+          double              volume = 0, reference_volume = 0;
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              const MaterialResponse<dim> &r      = scratch.responses[q];
-              const double                 weight = scratch.fe_values.JxW(q) / volume;
-              SymmetricTensor<2, 3>        stress_3d;
+              if (scratch.finite_strain)
+                jacobian[q] = determinant(scratch.deformation_gradient[q]);
+              volume += jacobian[q] * scratch.fe_values.JxW(q);
+              reference_volume += scratch.fe_values.JxW(q);
+            }
+          state.jacobian = volume / reference_volume;
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const MaterialResponse<dim> &r = scratch.responses[q];
+              const double weight = jacobian[q] * scratch.fe_values.JxW(q) / volume;
+              SymmetricTensor<2, dim> stress       = r.stress;
+              double                  out_of_plane = r.out_of_plane_stress;
+              if (scratch.finite_strain)
+                {
+                  const Tensor<2, dim> &F = scratch.deformation_gradient[q];
+                  stress = symmetrize(F * Tensor<2, dim>(r.stress) * transpose(F)) /
+                           jacobian[q];
+                  out_of_plane /= jacobian[q];
+                }
+              SymmetricTensor<2, 3> stress_3d;
               for (unsigned int i = 0; i < dim; ++i)
                 for (unsigned int j = i; j < dim; ++j)
-                  stress_3d[i][j] = r.stress[i][j];
+                  stress_3d[i][j] = stress[i][j];
               if (dim == 2)
-                stress_3d[2][2] = r.out_of_plane_stress;
-              state.stress += weight * r.stress;
-              state.out_of_plane_stress += weight * r.out_of_plane_stress;
+                stress_3d[2][2] = out_of_plane;
+              state.stress += weight * stress;
+              state.out_of_plane_stress += weight * out_of_plane;
               state.mean_stress += weight * trace(stress_3d) / 3.;
               state.von_mises_stress +=
                 weight * std::sqrt(1.5) * deviator(stress_3d).norm();

@@ -41,6 +41,18 @@ namespace FrictionalContact
       "does not lock) or the law flows plastically (plastic flow keeps the "
       "volume, and the standard element locks where it flows), and the "
       "standard element otherwise.");
+    prm.declare_entry(
+      "Kinematics",
+      "small strain",
+      Patterns::Anything(),
+      "'small strain' (the strain is the symmetric displacement gradient, "
+      "the equilibrium is written on the reference configuration) or "
+      "'finite strain' (total Lagrangian: F = I + Grad u, the law gives "
+      "the second Piola-Kirchhoff stress of the Green-Lagrange strain, the "
+      "tangent has its geometric part; tractions and pressures stay dead "
+      "loads per reference area). 'neo-Hookean' needs finite strain; "
+      "'linear elastic' at finite strain is the St. Venant-Kirchhoff law; "
+      "finite strain takes the standard element.");
   }
 
 
@@ -122,6 +134,11 @@ namespace FrictionalContact
   ElasticConstants<dim>::ElasticConstants(const BodyEntries &entries,
                                           const bool         isochoric)
   {
+    const std::string kinematics  = entries.get("Kinematics");
+    if (kinematics != "small strain" && kinematics != "finite strain")
+      Input::fail(entries.path_of("Kinematics"), kinematics,
+                  "'small strain' or 'finite strain' is expected");
+    finite_strain                 = kinematics == "finite strain";
     youngs_modulus                = entries.get_number("Young's modulus");
     poissons_ratio                = entries.get_number("Poisson's ratio");
     const std::string model       = entries.get("Two-dimensional model");
@@ -133,6 +150,15 @@ namespace FrictionalContact
       Input::fail("Material/Formulation", formulation,
                   "'auto', 'standard' or 'B-bar' is expected");
     plane_stress = dim == 2 && model == "plane stress";
+    if (finite_strain && plane_stress)
+      Input::fail(entries.path_of("Kinematics"), kinematics,
+                  "finite strain is written for plane strain and 3D: set "
+                  "<Material/Two-dimensional model> = plane strain");
+    if (finite_strain && formulation == "B-bar")
+      Input::fail(entries.path_of("Formulation"), formulation,
+                  "the B-bar element is a small-strain element: with "
+                  "<Material/Kinematics> = finite strain take 'standard' "
+                  "(or 'auto')");
 
     if (!(youngs_modulus > 0))
       Input::fail("Material/Young's modulus",
@@ -144,10 +170,12 @@ namespace FrictionalContact
                   "a number strictly between -1 and 0.5 is expected");
 
     const bool locks = !plane_stress && poissons_ratio > locking_threshold;
-    mean_dilatation_for_flow = formulation == "auto" && !locks && isochoric && !plane_stress;
-    mean_dilatation =
-      formulation == "B-bar" || (formulation == "auto" && (locks || mean_dilatation_for_flow));
-    standard_forced = formulation == "standard";
+    mean_dilatation_for_flow =
+      formulation == "auto" && !locks && isochoric && !plane_stress && !finite_strain;
+    mean_dilatation = formulation == "B-bar" ||
+                      (formulation == "auto" && !finite_strain &&
+                       (locks || mean_dilatation_for_flow));
+    standard_forced = formulation == "standard" || finite_strain;
 
     const double mu = youngs_modulus / (2. * (1. + poissons_ratio));
     double       lambda = youngs_modulus * poissons_ratio /
@@ -215,6 +243,8 @@ namespace FrictionalContact
       text += plane_stress ? ", plane stress" : ", plane strain";
     if (mean_dilatation)
       text += ", B-bar element";
+    if (finite_strain)
+      text += ", finite strain";
     return text;
   }
 
@@ -227,6 +257,12 @@ namespace FrictionalContact
     if (!standard_forced || plane_stress ||
         !(poissons_ratio > locking_threshold))
       return "";
+    if (finite_strain)
+      return "Warning: the standard Q1 element locks at nu = " +
+             Input::to_text(poissons_ratio) +
+             " (too stiff, wrong contact pressures), and finite strain has "
+             "no mean-dilatation element: keep nu <= 0.45 or take "
+             "<Material/Kinematics> = small strain with the B-bar element";
     return "Warning: the standard Q1 element locks at nu = " +
            Input::to_text(poissons_ratio) +
            " (too stiff, wrong contact pressures); set <Material/Formulation> "
@@ -303,6 +339,17 @@ namespace FrictionalContact
           all_bodies);
         materials[id]->parse_parameters(material, own);
         names[id] = name;
+        const bool finite_strain = materials[id]->elastic().finite_strain;
+        if (finite_strain && !materials[id]->allows_finite_strain())
+          Input::fail(material.path_of("Kinematics"), "finite strain",
+                      "the law '" + law + "' of the body '" + name +
+                        "' is written for small strain only: take "
+                        "'neo-Hookean' or 'linear elastic' at finite strain");
+        if (!finite_strain && materials[id]->needs_finite_strain())
+          Input::fail(material.path_of("Kinematics"), "small strain",
+                      "the law '" + law + "' of the body '" + name +
+                        "' is a finite-strain law: set <Material/Kinematics> "
+                        "= finite strain");
       }
   }
 
@@ -324,9 +371,21 @@ namespace FrictionalContact
   Materials<dim>::all_linear() const
   {
     for (const auto &[id, material] : materials)
-      if (!material->is_linear())
+      if (!material->is_linear() || material->elastic().finite_strain)
         return false;
     return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  Materials<dim>::any_finite_strain() const
+  {
+    for (const auto &[id, material] : materials)
+      if (material->elastic().finite_strain)
+        return true;
+    return false;
   }
 
 

@@ -269,12 +269,14 @@ namespace FrictionalContact
                              vector_field);
     // Cell data: the averages over each cell's quadrature points of the
     // stress (von Mises, mean stress: tension positive, its negative the
-    // pressure of an incompressible body) and of the plastic state, and
-    // the body (material id).
+    // pressure of an incompressible body; Cauchy's at finite strain) and of
+    // the plastic state, det F at finite strain, and the body (material
+    // id).
     const std::vector<CellState<dim>> states = response.cell_states(u_ghosted);
     const unsigned int n_cells = triangulation.n_active_cells();
     dealii::Vector<float> von_mises(n_cells), mean_stress(n_cells),
-      plastic_strain(n_cells), yield_state(n_cells), body_id(n_cells);
+      plastic_strain(n_cells), yield_state(n_cells), body_id(n_cells),
+      jacobian(n_cells);
     std::vector<dealii::Vector<float>> plastic_tensor(6, dealii::Vector<float>(n_cells));
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -285,6 +287,7 @@ namespace FrictionalContact
           mean_stress[c]    = state.mean_stress;
           plastic_strain[c] = state.equivalent_plastic_strain;
           yield_state[c]    = state.yield_state;
+          jacobian[c]       = state.jacobian;
           body_id[c]        = cell->material_id();
           for (unsigned int k = 0; k < 6; ++k)
             plastic_tensor[k][c] = state.plastic_strain.access_raw_entry(k);
@@ -298,6 +301,8 @@ namespace FrictionalContact
       data_out.add_data_vector(plastic_tensor[k],
                                std::string("plastic_strain_") + component[k]);
     data_out.add_data_vector(yield_state, "yield_state");
+    if (response.finite_strain())
+      data_out.add_data_vector(jacobian, "det_F");
     data_out.add_data_vector(body_id, "body");
     data_out.add_data_vector(scalar_dof_handler, gap_ghosted, "gap");
     data_out.add_data_vector(scalar_dof_handler,

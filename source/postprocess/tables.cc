@@ -68,6 +68,9 @@ namespace FrictionalContact
         for (unsigned int j = i + 1; j < 3; ++j)
           header += std::string(",ep") + axis[i] + axis[j];
       header += ",yield_state";
+      const bool finite_strain = response.finite_strain();
+      if (finite_strain)
+        header += ",det_F";
 
       TrilinosWrappers::MPI::Vector u_ghosted = body.make_ghosted_vector();
       u_ghosted                               = u;
@@ -101,6 +104,8 @@ namespace FrictionalContact
               for (unsigned int j = i + 1; j < 3; ++j)
                 row << ',' << state.plastic_strain[i][j];
             row << ',' << state.yield_state;
+            if (finite_strain)
+              row << ',' << state.jacobian;
             rows.push_back(row.str());
           }
       return rows;

@@ -7,6 +7,7 @@
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace FrictionalContact
@@ -222,6 +223,8 @@ namespace FrictionalContact
       const StiffnessOperator &K = problem.stiffness;
       const MPI_Comm           comm = du.get_mpi_communicator();
       double                   moved = 0;
+      if (problem.nonlinear != nullptr)
+        w = du; // the iterate before the move, for an inverted cell below
       const bool any_slip = Utilities::MPI::logical_or(
         impose_node_conditions(problem, sets.conditions, du, moved) && friction,
         comm);
@@ -236,10 +239,25 @@ namespace FrictionalContact
       // K du at du_D. A nonlinear law's N(du) and tangent were made at the
       // iterate (search_along_step()): evaluated again only where the node
       // conditions moved it by more than round-off.
-      if (problem.nonlinear == nullptr ||
-          Utilities::MPI::max(moved, comm) >
-            1e-14 * std::max(problem.length_scale, du.linfty_norm()))
+      if (problem.nonlinear == nullptr)
         problem.internal_force(du, K_du);
+      else if (Utilities::MPI::max(moved, comm) >
+               1e-14 * std::max(problem.length_scale, du.linfty_norm()))
+        try
+          {
+            problem.internal_force(du, K_du);
+          }
+        catch (const InvertedCell &)
+          {
+            // The move inverts a cell (finite strain: the contact nodes
+            // moved, the cells behind them not yet): N(du) linearised at
+            // the iterate instead, N(du_0) + K_T (du - du_0), which makes
+            // the step that of Newton's method with the node conditions as
+            // constraints of the linearisation.
+            w.sadd(-1., 1., du);
+            K.vmult(rhs, w);
+            K_du += rhs;
+          }
       rhs = problem.load;
       rhs -= K_du;
       if (any_slip)
@@ -378,6 +396,10 @@ namespace FrictionalContact
 
 
 
+    /// How often a Newton step that inverts a cell is halved before the
+    /// solve stops (2^-20: the step has vanished).
+    constexpr unsigned int max_halvings_for_inverted_cells = 20;
+
     /**
      * After the linear solve: the reactions of the new du, then the line
      * search along the segment from the previous iterate, on the
@@ -398,8 +420,21 @@ namespace FrictionalContact
                       std::vector<Tensor<1, dim>>      &r,
                       NewtonWorkspace<dim>             &work)
     {
-      // With a nonlinear law, also its tangent here for the next step.
-      problem.internal_force(du, work.K_du, /*with_tangent=*/true);
+      // With a nonlinear law, also its tangent here for the next step; a
+      // step that inverts a cell (finite strain) is halved until it does
+      // not.
+      for (unsigned int halvings = 0;; ++halvings)
+        try
+          {
+            problem.internal_force(du, work.K_du, /*with_tangent=*/true);
+            break;
+          }
+        catch (const InvertedCell &)
+          {
+            if (halvings == max_halvings_for_inverted_cells)
+              throw;
+            shorten_step(0.5, work.previous_du, work.previous_r, du, r);
+          }
       work.scratch = work.K_du;
       work.scratch -= problem.load;
       active_reactions(problem.contact, conditions, work.scratch, r);
@@ -414,7 +449,14 @@ namespace FrictionalContact
         nonlinear_balance = [&](const double t) {
           work.w = work.previous_du;
           work.w.sadd(1 - t, t, du);
-          problem.internal_force(work.w, work.rhs);
+          try
+            {
+              problem.internal_force(work.w, work.rhs);
+            }
+          catch (const InvertedCell &)
+            {
+              return std::numeric_limits<double>::infinity();
+            }
           work.rhs -= problem.load;
           work.rhs.add(-(1 - t), work.previous_T_r, -t, work.T_r);
           return work.rhs.norm_sqr();

@@ -36,6 +36,17 @@ namespace FrictionalContact
   };
 
   /**
+   * A displacement that inverts a cell of a finite-strain body (det F <=
+   * 0 at a point): no state of the law. Newton's line search shortens a
+   * step that meets it; elsewhere it stops the solve like any SolverError.
+   */
+  class InvertedCell : public SolverError
+  {
+  public:
+    using SolverError::SolverError;
+  };
+
+  /**
    * An entry of the input that evaluates to NaN or infinity at a time the
    * loading history reaches (a load factor 1/(t - 1) at t = 1). Stops the
    * run with exit code 2 like a SolverError, but is never retried with a

@@ -32,6 +32,8 @@ namespace FrictionalContact
     /// 0: never yielded; 1: plastic strain, now elastic (unloaded); 2: a
     /// point flows (on the yield surface).
     unsigned int yield_state = 0;
+    /// J = det F, the volume ratio (1 at small strain).
+    double jacobian = 1;
   };
 
 
@@ -40,7 +42,8 @@ namespace FrictionalContact
    * The bodies' response to a displacement u: at the quadrature points of
    * the locally owned cells, the strain of the element (the standard Q1
    * element's, or the B-bar element's with the cell average of the
-   * dilatation as its volumetric part), the stress of each body's law from
+   * dilatation as its volumetric part; at finite strain the Green-Lagrange
+   * strain of F = I + Grad u), the stress of each body's law from
    * the committed history, and from them the internal force f_int(u), the
    * tangent K_T(u), the history that goes with u, and the cell averages
    * for output. The one place where stress is recovered: the residual,
@@ -48,7 +51,12 @@ namespace FrictionalContact
    *
    * The element: f_i = int grad^s phi_i : sigma + (div_bar phi_i - div
    * phi_i) pi, with pi the law's volumetric stress (zero term for the
-   * standard element), and K_T its derivative.
+   * standard element), and K_T its derivative. At finite strain (total
+   * Lagrangian): f_i = int Grad phi_i : F S, and K_T its derivative, with
+   * the material part F^T Grad phi_i : dS/dE : F^T Grad phi_j and the
+   * geometric part Grad phi_i : Grad phi_j S. A point where det F <= 0
+   * (an inverted element) stops the evaluation with a SolverError that
+   * names the cell, on every rank, so that the increment can be cut.
    */
   template <int dim>
   class BodyResponse
@@ -107,6 +115,14 @@ namespace FrictionalContact
     void
     commit(const Vector &u_ghosted);
 
+    /// Whether some body is at finite strain (the cell states then hold
+    /// the Cauchy stress and det F).
+    bool
+    finite_strain() const
+    {
+      return materials.any_finite_strain();
+    }
+
     /// The averages of each locally owned cell, by active_cell_index()
     /// (default values on the other cells).
     std::vector<CellState<dim>>
@@ -131,6 +147,12 @@ namespace FrictionalContact
       std::vector<std::vector<Tensor<1, dim>>> vertex_gradient;
       std::vector<double>                      mean_divergence;
       std::vector<MaterialResponse<dim>>       responses;
+      /// F = I + Grad u at the points of a finite-strain cell; the
+      /// smallest det F met since the scratch was made, and where.
+      bool                                     finite_strain = false;
+      std::vector<Tensor<2, dim>>              deformation_gradient;
+      double                                   smallest_jacobian = 1;
+      Point<dim>                               smallest_jacobian_at;
       FullMatrix<double>                       matrix;
       dealii::Vector<double>                   force;
     };
@@ -144,11 +166,21 @@ namespace FrictionalContact
                   CellScratch                                          &scratch,
                   double                                               *new_history) const;
 
-    /// The cell force (and matrix) of the responses in @p scratch.
+    /// The cell force (and matrix) of the responses in @p scratch (of the
+    /// cell's kinematics).
     void
     cell_force_and_tangent(const bool mean_dilatation,
                            const bool with_tangent,
                            CellScratch &scratch) const;
+
+    /// The same at finite strain, from F and S.
+    void
+    finite_strain_force_and_tangent(const bool with_tangent, CellScratch &scratch) const;
+
+    /// Throws a SolverError on every rank if some rank's @p scratch met
+    /// det F <= 0. Collective.
+    void
+    refuse_inverted_cells(const CellScratch &scratch) const;
 
     const ElasticBody<dim>  &body;
     const Materials<dim>    &materials;

@@ -68,7 +68,8 @@ namespace FrictionalContact
    * ratio, in 2D plane stress or plane strain, and the element formulation
    * that carries the volumetric strain (the standard Q1 element, or the
    * mean-dilatation B-bar element that does not lock as nu approaches 1/2,
-   * or where plastic flow is isochoric). Owns the stress-strain tensor of
+   * or where plastic flow is isochoric), and the kinematics (small strain,
+   * or finite strain: total Lagrangian). Owns the stress-strain tensor of
    * linear elasticity and its split into shear and bulk parts.
    */
   template <int dim>
@@ -132,6 +133,10 @@ namespace FrictionalContact
     bool   plane_stress;
     /// Whether the mean-dilatation (B-bar) element is used.
     bool   mean_dilatation;
+    /// Whether the body is at finite strain (<Material/Kinematics>): the
+    /// law's strain is then the Green-Lagrange strain E and its stress the
+    /// second Piola-Kirchhoff stress S.
+    bool   finite_strain;
     /// G: the shear modulus.
     double shear_modulus;
     /// K: the bulk modulus of dim-dimensional elasticity (lambda + 2 G / dim,
@@ -218,6 +223,20 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Whether the law is written for finite strain too (a stress S of the
+    /// Green-Lagrange strain E), and whether it is for finite strain only
+    /// (it means nothing at small strain).
+    virtual bool
+    allows_finite_strain() const
+    {
+      return false;
+    }
+    virtual bool
+    needs_finite_strain() const
+    {
+      return false;
+    }
+
     /// How many history values a quadrature point keeps (0: none).
     virtual unsigned int
     n_history_values() const
@@ -297,9 +316,13 @@ namespace FrictionalContact
     bool
     any_mean_dilatation() const;
 
-    /// Whether every body is linear elastic.
+    /// Whether every body is linear elastic at small strain.
     bool
     all_linear() const;
+
+    /// Whether some body is at finite strain.
+    bool
+    any_finite_strain() const;
 
     /// The largest number of history values of any body's law.
     unsigned int
