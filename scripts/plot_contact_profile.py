@@ -55,13 +55,17 @@ def read_scene(directory):
 
 def hertz_curve(scene, rows):
     """(x, p) of Hertz's pressure for the run's normal force, or None where
-    the scene is not a half disc."""
+    the scene is not a half disc or its contact is too wide for Hertz's
+    theory (a half-width beyond a fifth of the radius, as in a squeezed
+    O-ring)."""
     if scene is None or scene.dim != 2 or math.isnan(scene.radius) or math.isnan(scene.E_star):
         return None
     # The normal force of this increment: the sum of the nodal reactions,
     # doubled for the symmetry plane.
     P = scene.copies * sum(abs(float(r["rn"])) for r in rows)
     a = math.sqrt(4 * P * scene.radius / (math.pi * scene.E_star))
+    if a > 0.2 * scene.radius:
+        return None
     p0 = 2 * P / (math.pi * a)
     centre = scene.center[0]
     # Only the side the mesh models where a symmetry plane cuts it.

@@ -545,7 +545,7 @@ set_tests_properties(j2_uniaxial_adaptive.exact PROPERTIES FIXTURES_REQUIRED
   j2_uniaxial_adaptive)
 
 # The residual impression of step-42's indentation, pressed and lifted, on
-# 6, 12 and 24 cells per edge: a permanent dent that converges with the
+# 4, 8 and 16 cells per edge: a permanent dent that converges with the
 # mesh (residual_impression.sh).
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
 add_test(NAME residual_impression
@@ -553,3 +553,13 @@ add_test(NAME residual_impression
           ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
 set_tests_properties(residual_impression PROPERTIES ENVIRONMENT "${_environment}")
+
+# The O-ring squeezed by 25 % (neo-Hookean at finite strain) on 2, 3 and 4
+# levels of refinement: its force converges with the mesh
+# (o_ring_convergence.sh).
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/o_ring_convergence)
+add_test(NAME o_ring_convergence
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/o_ring_convergence.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/o_ring_convergence)
+set_tests_properties(o_ring_convergence PROPERTIES ENVIRONMENT "${_environment}")

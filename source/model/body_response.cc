@@ -19,6 +19,17 @@ namespace FrictionalContact
         sum += g[m] * s[c][m];
       return sum;
     }
+
+
+    /// Fills the upper triangle of a symmetric matrix of which only the
+    /// lower one was assembled.
+    void
+    copy_lower_to_upper(FullMatrix<double> &matrix)
+    {
+      for (unsigned int i = 0; i < matrix.m(); ++i)
+        for (unsigned int j = i + 1; j < matrix.n(); ++j)
+          matrix(i, j) = matrix(j, i);
+    }
   } // namespace
 
 
@@ -219,9 +230,7 @@ namespace FrictionalContact
             }
       }
     if (with_tangent)
-      for (unsigned int i = 0; i < scratch.matrix.m(); ++i)
-        for (unsigned int j = i + 1; j < scratch.matrix.n(); ++j)
-          scratch.matrix(i, j) = scratch.matrix(j, i);
+      copy_lower_to_upper(scratch.matrix);
   }
 
 
@@ -291,9 +300,7 @@ namespace FrictionalContact
           }
       }
     if (with_tangent)
-      for (unsigned int i = 0; i < scratch.matrix.m(); ++i)
-        for (unsigned int j = i + 1; j < scratch.matrix.n(); ++j)
-          scratch.matrix(i, j) = scratch.matrix(j, i);
+      copy_lower_to_upper(scratch.matrix);
   }
 
 
