@@ -311,7 +311,24 @@ def linear_speed(root):
                      "peak MB per rank", "forces differ by"], body)
 
 
+def finite_strain(root):
+    """bench/finite_strain.py: each scene's last rows, small and finite
+    strain."""
+    latest = {}
+    for r in rows(root, "finite-strain.csv"):
+        latest.setdefault(r["scene"], {})[r["kinematics"]] = r
+    body = []
+    for scene, variants in latest.items():
+        for kinematics, r in variants.items():
+            body.append([scene, r["ranks"], kinematics, thousands(r["d"]), r["increments"],
+                         r["newton_iterations"], r["increment_in_elastic_solves"],
+                         r["finite_over_small"] if kinematics == "finite strain" else ""])
+    return markdown(["scene", "ranks", "kinematics", "d", "increments", "Newton steps",
+                     "increment in elastic solves", "finite / small"], body)
+
+
 TABLES = {
+    "finite-strain": finite_strain,
     "linear-speed": linear_speed,
     "step42": step42,
     "same-solutions": same_solutions,

@@ -242,7 +242,7 @@ namespace FrictionalContact
   {
     // The shape function of dof (a, c) is N_a e_c, its gradient e_c (x)
     // Grad N_a: the force is (F S)_cJ dN_a/dX_J, the material part of the
-    // matrix F_cI dN_a/dX_J C_IJKL F_dK dN_b/dX_L, the geometric part
+    // matrix dN_a/dX_J F_cI C_IJKL F_dK dN_b/dX_L, the geometric part
     // delta_cd Grad N_a . S Grad N_b.
     const unsigned int n_vertices = scratch.dof.size();
     const auto        &dof        = scratch.dof;
@@ -262,42 +262,59 @@ namespace FrictionalContact
             scratch.force(dof[a][c]) += (P[c] * G[a]) * JxW;
         if (!with_tangent)
           continue;
-        // FG[b][d] = F^T e_d (x) Grad N_b, the variation of F^T F / 2's
-        // non-symmetric part; CFG[b][d] = C : FG[b][d].
-        std::array<std::array<Tensor<2, dim>, dim>, GeometryInfo<dim>::vertices_per_cell> FG, CFG;
+        // The first elasticity tensor A = dP/dF: A_cJdL = F_cI C_IJKL F_dK +
+        // delta_cd S_JL, with C the law's dS/dE (its volumetric part
+        // c1 (x) I); then T_b[c][J][d] = A_cJdL dN_b/dX_L, and the entry of
+        // (a, c), (b, d) is dN_a/dX_J T_b[c][J][d].
+        double CF[dim][dim][dim][dim]; // CF[I][J][d][L] = C_IJKL F_dK
+        for (unsigned int I = 0; I < dim; ++I)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int L = 0; L < dim; ++L)
+                {
+                  double sum = r.stress_by_volumetric_strain[I][J] * F[d][L];
+                  for (unsigned int K = 0; K < dim; ++K)
+                    sum += r.stress_by_strain[I][J][K][L] * F[d][K];
+                  CF[I][J][d][L] = sum;
+                }
+        double A[dim][dim][dim][dim];
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int L = 0; L < dim; ++L)
+                {
+                  double sum = c == d ? S[J][L] : 0.;
+                  for (unsigned int I = 0; I < dim; ++I)
+                    sum += F[c][I] * CF[I][J][d][L];
+                  A[c][J][d][L] = sum;
+                }
+        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
         for (unsigned int b = 0; b < n_vertices; ++b)
-          for (unsigned int d = 0; d < dim; ++d)
-            FG[b][d] = outer_product(F[d], G[b]);
-        for (unsigned int b = 0; b < n_vertices; ++b)
-          for (unsigned int d = 0; d < dim; ++d)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int J = 0; J < dim; ++J)
+              for (unsigned int d = 0; d < dim; ++d)
                 {
                   double sum = 0;
-                  for (unsigned int k = 0; k < dim; ++k)
-                    sum += (r.stress_by_strain[i][j][k] * FG[b][d][k]) +
-                           r.stress_by_volumetric_strain[i][j] * FG[b][d][k][k];
-                  CFG[b][d][i][j] = sum;
+                  for (unsigned int L = 0; L < dim; ++L)
+                    sum += A[c][J][d][L] * G[b][L];
+                  T[b][c][J][d] = sum;
                 }
         for (unsigned int a = 0; a < n_vertices; ++a)
-          {
-            const Tensor<1, dim> SG = S * G[a];
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                const unsigned int i = dof[a][c];
-                for (unsigned int b = 0; b < n_vertices; ++b)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    {
-                      const unsigned int j = dof[b][d];
-                      if (j > i)
-                        continue;
-                      double k = scalar_product(FG[a][c], CFG[b][d]);
-                      if (c == d)
-                        k += SG * G[b];
-                      scratch.matrix(i, j) += k * JxW;
-                    }
-              }
-          }
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const unsigned int i = dof[a][c];
+              for (unsigned int b = 0; b < n_vertices; ++b)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const unsigned int j = dof[b][d];
+                    if (j > i)
+                      continue;
+                    double k = 0;
+                    for (unsigned int J = 0; J < dim; ++J)
+                      k += G[a][J] * T[b][c][J][d];
+                    scratch.matrix(i, j) += k * JxW;
+                  }
+            }
       }
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);

@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Finite strain against small strain on the same scene and mesh: each scene
+runs linear elastic at small strain, neo-Hookean at finite strain, and
+without contact (one elastic solve: the unit of time), alternately, best of
+--repeat, in one run of this script. Records the Newton steps and the
+solve time per increment (the timer's Assembly, Elastic solve and Contact
+solve: no set-up, no output) in elastic solves, and the ratio of the two
+kinematics (the goal: at most 2). Appends to
+doc/benchmarks/finite-strain.csv and rewrites the table of
+doc/performance.md ("Finite strain against small strain").
+
+usage: bench/finite_strain.py [--program build/contact] [--repeat 3]
+                              [--csv doc/benchmarks/finite-strain.csv]
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from doc_tables import write_tables  # noqa: E402
+
+COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
+           "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
+           "finite_over_small"]
+ENVIRONMENT = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_pml="ob1")
+# (name, scene file, ranks): Hertz at 1 % of the radius, where both
+# kinematics apply, and the O-ring squeezed by 25 %.
+SCENES = [("hertz_2d", "hertz_2d.prm", 1), ("hertz_3d", "hertz_3d.prm", 2),
+          ("o_ring_2d", "o_ring_2d.prm", 1)]
+VARIANTS = {
+    "small strain": "subsection Material\n  set Model = linear elastic\n"
+                    "  set Kinematics = small strain\nend\n",
+    "finite strain": "subsection Material\n  set Model = neo-Hookean\n"
+                     "  set Kinematics = finite strain\nend\n",
+    "no contact": "subsection Material\n  set Model = linear elastic\n"
+                  "  set Kinematics = small strain\nend\n"
+                  "subsection Contact\n  set Contact boundaries =\nend\n"
+                  "subsection Loading\n  set Number of increments = 1\nend\n",
+}
+NO_OUTPUT = """set Output directory = output
+subsection Postprocess
+  subsection Visualization
+    set Write vtu = false
+  end
+end
+"""
+
+
+def run(program, scene, variant, ranks, folder):
+    with open(os.path.join(folder, "scene.prm"), "w") as f:
+        f.write(f"include {ROOT}/parameters/{scene}\n" + VARIANTS[variant] + NO_OUTPUT)
+    command = [program, "scene.prm"]
+    if ranks > 1:
+        command = ["mpirun", "-np", str(ranks)] + command
+    done = subprocess.run(command, cwd=folder, capture_output=True, text=True,
+                          env=ENVIRONMENT)
+    output = done.stdout + done.stderr
+    if done.returncode != 0:
+        sys.exit(f"{scene}, {variant}: {' '.join(command)} failed:\n{output[-2000:]}")
+    summary = re.findall(r"-- summary: (.*)", output)[-1]
+    sections = dict((name.strip(), float(value)) for name, value in
+                    re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
+    return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
+                increments=len(re.findall(r"^Increment \d+/", output, re.M)),
+                newton_iterations=sum(int(n) for n in
+                                      re.findall(r": (\d+) Newton iterations", output)),
+                solve_s=sum(sections.get(k, 0.) for k in
+                            ("Assembly", "Elastic solve", "Contact solve")))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter,
+                                     epilog=__doc__)
+    parser.add_argument("--program", default=os.path.join(ROOT, "build", "contact"))
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
+                                                      "finite-strain.csv"))
+    args = parser.parse_args()
+    rows = []
+    for name, scene, ranks in SCENES:
+        best = {}
+        for _ in range(args.repeat):
+            for variant in VARIANTS:
+                with tempfile.TemporaryDirectory() as folder:
+                    result = run(args.program, scene, variant, ranks, folder)
+                if variant not in best or result["solve_s"] < best[variant]["solve_s"]:
+                    best[variant] = result
+        unit = best["no contact"]["solve_s"]
+        per_increment = {v: best[v]["solve_s"] / best[v]["increments"]
+                         for v in ("small strain", "finite strain")}
+        for variant in ("small strain", "finite strain"):
+            row = dict(best[variant], scene=name, ranks=ranks, kinematics=variant,
+                       elastic_solve_s=f"{unit:.4f}",
+                       increment_in_elastic_solves=f"{per_increment[variant] / unit:.2f}",
+                       finite_over_small=f"{per_increment['finite strain'] / per_increment['small strain']:.2f}")
+            row["solve_s"] = f"{row['solve_s']:.4f}"
+            rows.append(row)
+            print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
+    new_file = not os.path.exists(args.csv)
+    with open(args.csv, "a", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
+        if new_file:
+            writer.writeheader()
+        writer.writerows(rows)
+    write_tables()
+
+
+if __name__ == "__main__":
+    main()
