@@ -521,6 +521,19 @@ def differences(root=ROOT, check=True):
     return found
 
 
+def append_rows(path, columns, rows):
+    """Appends @p rows (dicts; floats to 6 digits) to the CSV @p path, with
+    its header @p columns if the file is new."""
+    new_file = not os.path.exists(path)
+    with open(path, "a", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        if new_file:
+            writer.writeheader()
+        for row in rows:
+            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
+                             for k, v in row.items()})
+
+
 def write_tables(root=ROOT, check=False):
     """Rewrites (or with check, compares) every marked table and quote;
     returns 'page: what' for each that differs (see differences())."""

@@ -13,7 +13,6 @@ usage: bench/finite_strain.py [--program build/contact] [--repeat 3]
                               [--csv doc/benchmarks/finite-strain.csv]
 """
 import argparse
-import csv
 import os
 import re
 import subprocess
@@ -23,7 +22,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from doc_tables import write_tables  # noqa: E402
+from doc_tables import append_rows, write_tables  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -104,12 +103,7 @@ def main():
             row["solve_s"] = f"{row['solve_s']:.4f}"
             rows.append(row)
             print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
-    new_file = not os.path.exists(args.csv)
-    with open(args.csv, "a", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
-        if new_file:
-            writer.writeheader()
-        writer.writerows(rows)
+    append_rows(args.csv, COLUMNS, rows)
     write_tables()
 
 

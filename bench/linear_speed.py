@@ -14,7 +14,6 @@ Build the older version in a folder of its own (git worktree add ... and
 cmake there) first.
 """
 import argparse
-import csv
 import os
 import re
 import subprocess
@@ -24,7 +23,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from doc_tables import write_tables  # noqa: E402
+from doc_tables import append_rows, write_tables  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "version", "d", "newton_iterations", "wall_s",
            "peak_mb", "largest_force_difference"]
@@ -115,12 +114,7 @@ def main():
                        largest_force_difference=f"{difference:.1e}")
             rows.append(row)
             print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
-    new_file = not os.path.exists(args.csv)
-    with open(args.csv, "a", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
-        if new_file:
-            writer.writeheader()
-        writer.writerows(rows)
+    append_rows(args.csv, COLUMNS, rows)
     write_tables()
 
 

@@ -38,7 +38,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from doc_tables import write_tables  # noqa: E402
+from doc_tables import append_rows, write_tables  # noqa: E402
 
 STEP42_SOURCE = "/usr/share/doc/libdeal.ii-doc/examples/step-42"
 COLUMNS = ["mesh", "cells_per_edge", "ranks", "program", "element", "cells", "d",
@@ -252,14 +252,7 @@ def main():
             result.update(mesh="global", cells_per_edge=args.large, ranks=ranks)
             rows.append(result)
             print(", ".join(f"{k} {result.get(k, '')}" for k in COLUMNS), flush=True)
-    new_file = not os.path.exists(args.csv)
-    with open(args.csv, "a", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
-        if new_file:
-            writer.writeheader()
-        for row in rows:
-            writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
-                             for k, v in row.items()})
+    append_rows(args.csv, COLUMNS, rows)
     write_tables()
 
 
