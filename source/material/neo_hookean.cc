@@ -73,13 +73,21 @@ namespace FrictionalContact
         if (!with_tangent)
           return;
         const double shear = mu - lambda * log_J;
+        // A plain copy of C^-1: a SymmetricTensor's entries are found by
+        // index arithmetic at each access.
+        double c[dim][dim];
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int l = 0; l < dim; ++l)
-                response.stress_by_strain[i][j][k][l] =
-                  lambda * C_inv[i][j] * C_inv[k][l] +
-                  shear * (C_inv[i][k] * C_inv[j][l] + C_inv[i][l] * C_inv[j][k]);
+            c[i][j] = C_inv[i][j];
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              Tensor<2, dim> &entries = response.stress_by_strain[i][j];
+              for (unsigned int k = 0; k < dim; ++k)
+                for (unsigned int l = 0; l < dim; ++l)
+                  entries[k][l] = lambda * c[i][j] * c[k][l] +
+                                  shear * (c[i][k] * c[j][l] + c[i][l] * c[j][k]);
+            }
         response.stress_by_volumetric_strain            = SymmetricTensor<2, dim>();
         response.volumetric_stress_by_strain            = SymmetricTensor<2, dim>();
         response.volumetric_stress_by_volumetric_strain = 0;
