@@ -14,7 +14,8 @@ using namespace FrictionalContact;
 
 namespace
 {
-  /// Runs a driver on @p loading; increments longer than @p longest fail.
+  /// Runs a driver on @p loading; increments longer than @p longest fail,
+  /// the others take 2 iterations.
   void
   check(const std::string &title, const std::string &loading, const double longest)
   {
@@ -34,6 +35,7 @@ namespace
             if (driver.times()[l] - driver.start_time(l) > longest * (1 + 1e-12))
               throw SolverError("too long");
             solved.push_back(l);
+            return 2u;
           },
           messages);
       }
@@ -44,12 +46,18 @@ namespace
     std::cout << title << ": " << outcome << "; times";
     for (const double t : driver.times())
       std::cout << ' ' << t;
-    unsigned int cut_lines = 0;
+    unsigned int cut_lines = 0, grown_lines = 0;
     std::istringstream lines(messages.str());
     for (std::string line; std::getline(lines, line);)
-      cut_lines += line.rfind("Cut in half", 0) == 0;
+      {
+        cut_lines += line.rfind("Cut in half", 0) == 0;
+        grown_lines += line.rfind("Grown back", 0) == 0;
+      }
     std::cout << "; " << solved.size() << " solved, " << cut_lines
-              << " cut lines" << std::endl;
+              << " cut lines";
+    if (grown_lines > 0)
+      std::cout << ", " << grown_lines << " grown lines";
+    std::cout << std::endl;
   }
 } // namespace
 
@@ -66,6 +74,21 @@ main(int argc, char *argv[])
   check("too many cuts",
         "set Number of increments = 1\nset On failure = cut increment\n"
         "set Maximum cuts = 1",
+        0.3);
+  // Easy increments (2 iterations) let the cut ones grow back: 1 is cut
+  // to 0.25, which passes; 0.25 to 0.5 merged with 0.5 to 1 fails and is
+  // cut again; never past the history's own time 1 of the second case.
+  check("cut increments grow back",
+        "set Number of increments = 1\nset On failure = cut increment\n"
+        "set Easy increment iterations = 2",
+        0.3);
+  check("growth stops at the history's times",
+        "set Increment times = 0.5, 1\nset On failure = cut increment\n"
+        "set Easy increment iterations = 2",
+        0.3);
+  check("hard increments stay cut",
+        "set Number of increments = 1\nset On failure = cut increment\n"
+        "set Easy increment iterations = 1",
         0.3);
   check("cuts reset after a success",
         "set Increment times = 0.25, 1\nset On failure = cut increment\n"

@@ -1,6 +1,8 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/driver/increment_driver.h>
 
+#include <algorithm>
+
 namespace FrictionalContact
 {
   void
@@ -19,6 +21,15 @@ namespace FrictionalContact
                       "5",
                       Patterns::Integer(0, 30),
                       "How often in a row an increment may be cut in half.");
+    prm.declare_entry("Easy increment iterations",
+                      "0",
+                      Patterns::Integer(0),
+                      "After an increment whose contact solve took at most "
+                      "this many iterations, the next two increments that "
+                      "cuts made (On failure = cut increment) are merged "
+                      "into one: the increment doubles back towards the "
+                      "loading history's own, never past its times. 0: "
+                      "cut increments stay cut.");
     prm.leave_subsection();
   }
 
@@ -30,6 +41,7 @@ namespace FrictionalContact
     history        = std::make_unique<LoadingHistory>(prm);
     cut_on_failure = prm.get("On failure") == "cut increment";
     maximum_cuts   = prm.get_integer("Maximum cuts");
+    easy_iterations = prm.get_integer("Easy increment iterations");
     prm.leave_subsection();
     end_times = history->increment_times();
   }
@@ -45,8 +57,12 @@ namespace FrictionalContact
     for (unsigned int l = first; l < end_times.size(); ++l)
       try
         {
-          increment(l);
-          cuts = 0;
+          const unsigned int iterations = increment(l);
+          cuts                          = 0;
+          if (easy_iterations > 0 && iterations <= easy_iterations && grow_after(l))
+            out << "Grown back (increment " << l + 1 << " took " << iterations
+                << " iterations), now " << end_times.size() << " increments"
+                << std::endl;
         }
       catch (const SolverError &error)
         {
@@ -61,5 +77,19 @@ namespace FrictionalContact
               << " increments, because " << error.what() << std::endl;
           --l;
         }
+  }
+
+
+
+  bool
+  IncrementDriver::grow_after(const unsigned int l)
+  {
+    if (l + 2 >= end_times.size())
+      return false;
+    const std::vector<double> planned = history->increment_times();
+    if (std::find(planned.begin(), planned.end(), end_times[l + 1]) != planned.end())
+      return false;
+    end_times.erase(end_times.begin() + l + 1);
+    return true;
   }
 } // namespace FrictionalContact

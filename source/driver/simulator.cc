@@ -169,7 +169,7 @@ namespace FrictionalContact
       {
         driver.run(
           first_increment,
-          [&](const unsigned int l) { solve_increment(l); },
+          [&](const unsigned int l) { return solve_increment(l); },
           pcout.get_stream());
       }
     catch (const StopRequested &stop)
@@ -321,7 +321,7 @@ namespace FrictionalContact
 
 
   template <int dim>
-  void
+  unsigned int
   Simulator<dim>::solve_increment(const unsigned int l)
   {
     const double t           = driver.times()[l];
@@ -377,6 +377,7 @@ namespace FrictionalContact
     // urgent one stops the contact solver earlier.
     if (const int signal = RunControl::stop_signal(mpi_communicator))
       throw StopRequested(signal);
+    return outcome.statistics.iterations;
   }
 
 

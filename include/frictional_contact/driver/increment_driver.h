@@ -17,9 +17,10 @@ namespace FrictionalContact
    * Runs the loading history increment by increment: owns the end times
    * t_1 < ... < t_n of the increments and the policy for an increment that
    * fails (abort the run, or retry it as two halves, up to a number of cuts
-   * in a row). Owns the subsection "Loading". It knows nothing of meshes or
-   * solvers: an increment is a function of its number, so that the policy
-   * can be tested alone.
+   * in a row) and for one that converged easily (the next two increments
+   * that cuts made merged back into one). Owns the subsection "Loading".
+   * It knows nothing of meshes or solvers: an increment is a function of
+   * its number, so that the policy can be tested alone.
    */
   class IncrementDriver
   {
@@ -29,15 +30,18 @@ namespace FrictionalContact
 
     explicit IncrementDriver(ParameterHandler &prm);
 
-    /// Solves increment l (from times()[l - 1], or 0, to times()[l]); throws
-    /// a SolverError if it fails.
-    using Increment = std::function<void(const unsigned int l)>;
+    /// Solves increment l (from times()[l - 1], or 0, to times()[l]) and
+    /// returns the contact solver's iterations; throws a SolverError if it
+    /// fails.
+    using Increment = std::function<unsigned int(const unsigned int l)>;
 
     /**
      * Runs increments @p first, first + 1, ... to the end. An increment that
      * throws a SolverError is retried as two halves, if the policy allows it
      * (one line on @p out says why), else the error goes on to the caller,
-     * as does any other exception.
+     * as does any other exception. After an increment that took at most
+     * <Easy increment iterations>, the next two increments that cuts made
+     * are merged into one (one line on @p out): the increment grows back.
      */
     void
     run(const unsigned int first, const Increment &increment, std::ostream &out);
@@ -71,9 +75,17 @@ namespace FrictionalContact
     }
 
   private:
+    /// Merges increments @p l + 1 and @p l + 2 if a cut made the end time of
+    /// the first (it is not one of the loading history's); returns whether
+    /// it did.
+    bool
+    grow_after(const unsigned int l);
+
     std::unique_ptr<LoadingHistory> history;
     std::vector<double> end_times;
     bool                cut_on_failure;
     unsigned int        maximum_cuts;
+    /// See <Loading/Easy increment iterations>; 0: never.
+    unsigned int        easy_iterations;
   };
 } // namespace FrictionalContact

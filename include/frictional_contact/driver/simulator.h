@@ -56,9 +56,10 @@ namespace FrictionalContact
 
   private:
     /// Solves increment @p l (on meshes adapted to it, if asked), adds it
-    /// to the state and runs the postprocessors; throws a SolverError if it
+    /// to the state and runs the postprocessors; returns the contact
+    /// solver's iterations on the last mesh; throws a SolverError if it
     /// fails.
-    void
+    unsigned int
     solve_increment(const unsigned int l);
 
     /// Solves increment @p l on the current mesh from the state; throws a
