@@ -15,7 +15,6 @@ usage: bench/finite_strain.py [--program build/contact] [--repeat 3]
 import argparse
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
@@ -23,12 +22,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
+from runs import run as run_program  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
            "finite_over_small"]
-ENVIRONMENT = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_pml="ob1")
 # (name, scene file, ranks): Hertz at 1 % of the radius, where both
 # kinematics apply, and the O-ring squeezed by 25 %.
 SCENES = [("hertz_2d", "hertz_2d.prm", 1), ("hertz_3d", "hertz_3d.prm", 2),
@@ -55,14 +53,7 @@ end
 def run(program, scene, variant, ranks, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(f"include {ROOT}/parameters/{scene}\n" + VARIANTS[variant] + NO_OUTPUT)
-    command = [program, "scene.prm"]
-    if ranks > 1:
-        command = ["mpirun", "-np", str(ranks)] + command
-    done = subprocess.run(command, cwd=folder, capture_output=True, text=True,
-                          env=ENVIRONMENT)
-    output = done.stdout + done.stderr
-    if done.returncode != 0:
-        sys.exit(f"{scene}, {variant}: {' '.join(command)} failed:\n{output[-2000:]}")
+    output, _ = run_program([program, "scene.prm"], ranks, folder)
     summary = re.findall(r"-- summary: (.*)", output)[-1]
     sections = dict((name.strip(), float(value)) for name, value in
                     re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))

@@ -16,7 +16,6 @@ cmake there) first.
 import argparse
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
@@ -24,11 +23,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
+from runs import run as run_program  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "version", "d", "newton_iterations", "wall_s",
            "peak_mb", "largest_force_difference"]
-ENVIRONMENT = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 # (name, text of the scene, ranks): example II at N_Y = 20 (d = 52,920)
 # with the semismooth Newton method, Hertz in 3D, and two bodies.
 SCENES = [
@@ -59,15 +57,7 @@ end
 def run(program, text, ranks, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(text + NO_OUTPUT)
-    command = [program, "scene.prm"]
-    if ranks > 1:
-        command = ["mpirun", "-np", str(ranks)] + command
-    command = ["/usr/bin/time", "-f", "WALL %e"] + command
-    done = subprocess.run(command, cwd=folder, capture_output=True, text=True,
-                          env=ENVIRONMENT)
-    output = done.stdout + done.stderr
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed:\n{output[-2000:]}")
+    output, wall = run_program([program, "scene.prm"], ranks, folder)
     forces = []
     statistics = os.path.join(folder, "output", "statistics")
     names = [l for l in open(statistics) if l.startswith("#")]
@@ -77,7 +67,7 @@ def run(program, text, ranks, folder):
         if not line.startswith("#"):
             values = line.split()
             forces.append([float(values[c]) for c in columns])
-    return dict(wall_s=float(re.findall(r"WALL ([0-9.]+)", output)[-1]),
+    return dict(wall_s=wall,
                 peak_mb=float(re.findall(r"peak memory = ([0-9.]+) MB", output)[-1]),
                 d=int(re.findall(r"d = (\d+)", output)[-1]),
                 newton_iterations=sum(int(n) for n in re.findall(r": (\d+) Newton iterations", output)),

@@ -39,28 +39,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
+from runs import run  # noqa: E402
 
 STEP42_SOURCE = "/usr/share/doc/libdeal.ii-doc/examples/step-42"
 COLUMNS = ["mesh", "cells_per_edge", "ranks", "program", "element", "cells", "d",
            "newton_steps", "wall_s", "output_s", "compute_s", "peak_mb",
            "contact_force", "uz_centre", "plastic_cells", "elastic_solve_s",
            "newton_step_in_elastic_solves"]
-ENVIRONMENT = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-
-
-def run(command, ranks, folder):
-    if ranks > 1:
-        command = ["mpirun", "-np", str(ranks)] + command
-    command = ["/usr/bin/time", "-f", "WALL %e"] + command
-    done = subprocess.run(command, cwd=folder, capture_output=True, text=True,
-                          env=ENVIRONMENT)
-    output = done.stdout + done.stderr
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed:\n{output[-3000:]}")
-    return output, float(re.findall(r"WALL ([0-9.]+)", output)[-1])
-
-
 def build_step42(build):
     folder = os.path.join(build, "step42")
     program = os.path.join(folder, "step-42")

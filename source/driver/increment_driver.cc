@@ -43,7 +43,8 @@ namespace FrictionalContact
     maximum_cuts   = prm.get_integer("Maximum cuts");
     easy_iterations = prm.get_integer("Easy increment iterations");
     prm.leave_subsection();
-    end_times = history->increment_times();
+    planned_times = history->increment_times();
+    end_times     = planned_times;
   }
 
 
@@ -86,8 +87,8 @@ namespace FrictionalContact
   {
     if (l + 2 >= end_times.size())
       return false;
-    const std::vector<double> planned = history->increment_times();
-    if (std::find(planned.begin(), planned.end(), end_times[l + 1]) != planned.end())
+    if (std::find(planned_times.begin(), planned_times.end(), end_times[l + 1]) !=
+        planned_times.end())
       return false;
     end_times.erase(end_times.begin() + l + 1);
     return true;

@@ -21,6 +21,25 @@ namespace FrictionalContact
     }
 
 
+    /// Adds JxW entry(a, c, b, d) at (dof[a][c], dof[b][d]) of @p matrix,
+    /// in its lower triangle (dof (a, c): component c at vertex a).
+    template <int dim, typename Entry>
+    void
+    add_lower_triangle(const std::vector<std::array<unsigned int, dim>> &dof,
+                       const double                                      JxW,
+                       const Entry                                      &entry,
+                       FullMatrix<double>                               &matrix)
+    {
+      for (unsigned int a = 0; a < dof.size(); ++a)
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int b = 0; b < dof.size(); ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (dof[b][d] <= dof[a][c])
+                matrix(dof[a][c], dof[b][d]) += entry(a, c, b, d) * JxW;
+    }
+
+
+
     /// Fills the upper triangle of a symmetric matrix of which only the
     /// lower one was assembled.
     void
@@ -56,7 +75,9 @@ namespace FrictionalContact
                       std::vector<Tensor<1, dim>>(GeometryInfo<dim>::vertices_per_cell))
     , mean_divergence(fe.n_dofs_per_cell())
     , responses(quadrature.size())
+    , strain(quadrature.size())
     , deformation_gradient(quadrature.size())
+    , jacobian(quadrature.size(), 1.)
     , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , force(fe.n_dofs_per_cell())
   {
@@ -85,7 +106,7 @@ namespace FrictionalContact
 
     std::fill(scratch.mean_divergence.begin(), scratch.mean_divergence.end(), 0.);
     double volume = 0, mean_dilatation = 0;
-    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    std::vector<SymmetricTensor<2, dim>> &strain = scratch.strain;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const double JxW = fe_values.JxW(q);
@@ -107,7 +128,8 @@ namespace FrictionalContact
             scratch.deformation_gradient[q] = unit_symmetric_tensor<dim>() + gradient;
             strain[q] = symmetrize(gradient) +
                         0.5 * symmetrize(transpose(gradient) * gradient);
-            const double jacobian = determinant(scratch.deformation_gradient[q]);
+            const double jacobian = scratch.jacobian[q] =
+              determinant(scratch.deformation_gradient[q]);
             if (jacobian < scratch.smallest_jacobian)
               {
                 scratch.smallest_jacobian    = jacobian;
@@ -115,7 +137,10 @@ namespace FrictionalContact
               }
           }
         else
-          strain[q] = symmetrize(gradient);
+          {
+            strain[q]           = symmetrize(gradient);
+            scratch.jacobian[q] = 1.;
+          }
         mean_dilatation += trace(strain[q]) * JxW;
       }
     for (double &d : scratch.mean_divergence)
@@ -126,8 +151,7 @@ namespace FrictionalContact
     const unsigned int  n_history = law.n_history_values();
     const double       *committed = history.values(cell);
     for (const unsigned int q : fe_values.quadrature_point_indices())
-      if (scratch.finite_strain &&
-          !(determinant(scratch.deformation_gradient[q]) > 0))
+      if (!(scratch.jacobian[q] > 0))
         // Inverted: no stress (refuse_inverted_cells() stops the solve).
         scratch.responses[q] = MaterialResponse<dim>();
       else
@@ -209,25 +233,19 @@ namespace FrictionalContact
                                    r.volumetric_stress_by_volumetric_strain *
                                      div_bar[dof[a][c]];
               }
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              const unsigned int i = dof[a][c];
-              for (unsigned int b = 0; b < n_vertices; ++b)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    const unsigned int j = dof[b][d];
-                    if (j > i)
-                      continue;
-                    double k = 0;
-                    for (unsigned int m = 0; m < dim; ++m)
-                      k += G[a][m] * T[b][c][m][d];
-                    if (mean_dilatation)
-                      k += coupling[a][c] * div_bar[j] +
-                           (div_bar[i] - G[a][c]) * volumetric[b][d];
-                    scratch.matrix(i, j) += k * JxW;
-                  }
-            }
+        add_lower_triangle<dim>(
+          dof,
+          JxW,
+          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
+            double k = 0;
+            for (unsigned int m = 0; m < dim; ++m)
+              k += G[a][m] * T[b][c][m][d];
+            if (mean_dilatation)
+              k += coupling[a][c] * div_bar[dof[b][d]] +
+                   (div_bar[dof[a][c]] - G[a][c]) * volumetric[b][d];
+            return k;
+          },
+          scratch.matrix);
       }
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);
@@ -299,22 +317,16 @@ namespace FrictionalContact
                     sum += A[c][J][d][L] * G[b][L];
                   T[b][c][J][d] = sum;
                 }
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              const unsigned int i = dof[a][c];
-              for (unsigned int b = 0; b < n_vertices; ++b)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    const unsigned int j = dof[b][d];
-                    if (j > i)
-                      continue;
-                    double k = 0;
-                    for (unsigned int J = 0; J < dim; ++J)
-                      k += G[a][J] * T[b][c][J][d];
-                    scratch.matrix(i, j) += k * JxW;
-                  }
-            }
+        add_lower_triangle<dim>(
+          dof,
+          JxW,
+          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
+            double k = 0;
+            for (unsigned int J = 0; J < dim; ++J)
+              k += G[a][J] * T[b][c][J][d];
+            return k;
+          },
+          scratch.matrix);
       }
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);
@@ -526,12 +538,10 @@ namespace FrictionalContact
           // At finite strain the Cauchy stress sigma = F S F^T / J
           // (sigma_zz = S_zz / J in plane strain), averaged over the
           // deformed cell.
-          std::vector<double> jacobian(n_points, 1.);
-          double              volume = 0, reference_volume = 0;
+          const std::vector<double> &jacobian = scratch.jacobian;
+          double                     volume = 0, reference_volume = 0;
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              if (scratch.finite_strain)
-                jacobian[q] = determinant(scratch.deformation_gradient[q]);
               volume += jacobian[q] * scratch.fe_values.JxW(q);
               reference_volume += scratch.fe_values.JxW(q);
             }

@@ -82,6 +82,8 @@ namespace FrictionalContact
     grow_after(const unsigned int l);
 
     std::unique_ptr<LoadingHistory> history;
+    /// The loading history's own end times, and those with the cuts.
+    std::vector<double> planned_times;
     std::vector<double> end_times;
     bool                cut_on_failure;
     unsigned int        maximum_cuts;

@@ -149,8 +149,11 @@ namespace FrictionalContact
       std::vector<MaterialResponse<dim>>       responses;
       /// F = I + Grad u at the points of a finite-strain cell; the
       /// smallest det F met since the scratch was made, and where.
+      std::vector<SymmetricTensor<2, dim>>     strain;
       bool                                     finite_strain = false;
+      /// F and det F at the points of a finite-strain cell.
       std::vector<Tensor<2, dim>>              deformation_gradient;
+      std::vector<double>                      jacobian;
       double                                   smallest_jacobian = 1;
       Point<dim>                               smallest_jacobian_at;
       FullMatrix<double>                       matrix;

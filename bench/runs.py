@@ -1,0 +1,26 @@
+"""Runs a program of a bench, on one rank or through mpirun, timed: the one
+place where the benches written with nonlinear laws start a run."""
+import os
+import re
+import subprocess
+import sys
+
+# One thread per rank, root allowed (containers), Open MPI's own
+# point-to-point layer (one node: no UCX probing).
+ENVIRONMENT = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_pml="ob1")
+
+
+def run(command, ranks, folder):
+    """Runs @p command in @p folder (through mpirun on @p ranks > 1); returns
+    its output (standard output and error) and its wall time in seconds.
+    Exits with the end of the output if it fails."""
+    if ranks > 1:
+        command = ["mpirun", "-np", str(ranks)] + command
+    command = ["/usr/bin/time", "-f", "WALL %e"] + command
+    done = subprocess.run(command, cwd=folder, capture_output=True, text=True,
+                          env=ENVIRONMENT)
+    output = done.stdout + done.stderr
+    if done.returncode != 0:
+        sys.exit(f"{' '.join(command)} failed:\n{output[-3000:]}")
+    return output, float(re.findall(r"WALL ([0-9.]+)", output)[-1])
