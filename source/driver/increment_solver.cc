@@ -269,6 +269,8 @@ namespace FrictionalContact
                           t_end);
     TrilinosWrappers::MPI::Vector start = state.u;
     start += lifting;
+    if (contact.follows_configuration())
+      model.get_contact().follow_configuration(start);
 
     IncrementOutcome<dim> outcome;
     outcome.load = std::make_unique<TrilinosWrappers::MPI::Vector>(
@@ -357,14 +359,21 @@ namespace FrictionalContact
       }
     if (contact.active() || newton_without_contact)
       {
-        outcome.problem =
-          make_problem(model,
-                       load,
-                       start,
-                       contact.obstacle_displacement(t_end) -
-                         contact.obstacle_displacement(t_start));
+        const Tensor<1, dim> obstacle_motion =
+          contact.obstacle_displacement(t_end) - contact.obstacle_displacement(t_start);
+        outcome.problem = make_problem(model, load, start, obstacle_motion);
         outcome.problem->nonlinear = outcome.response.get();
+        if (contact.follows_configuration())
+          outcome.problem->follow_geometry =
+            [&contact = model.get_contact(),
+             &problem = *outcome.problem,
+             start,
+             obstacle_motion](const TrilinosWrappers::MPI::Vector &du,
+                              std::vector<Tensor<1, dim>>         &r) {
+              take_contact_geometry(contact, problem, start, obstacle_motion, du, r);
+            };
         solve_contact(model, state, start, outcome, record_history, timer);
+        outcome.problem->follow_geometry = nullptr;
         if (!result.converged)
           return outcome;
         if (contact.active())
@@ -454,6 +463,33 @@ namespace FrictionalContact
     result.linear_iterations += elastic.linear_iterations;
     result.amg_setups += elastic.amg_setups;
     result.seconds += elastic.seconds;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::take_contact_geometry(
+    ContactOperator<dim>                &contact,
+    IncrementalProblem<dim>             &problem,
+    const TrilinosWrappers::MPI::Vector &start,
+    const Tensor<1, dim>                &obstacle_motion,
+    const TrilinosWrappers::MPI::Vector &du,
+    std::vector<Tensor<1, dim>>         &r)
+  {
+    // The reactions keep their Cartesian direction.
+    std::vector<Tensor<1, dim>> forces(r.size());
+    for (unsigned int j = 0; j < r.size(); ++j)
+      forces[j] = contact.to_cartesian(j, r[j]);
+    TrilinosWrappers::MPI::Vector solved = start;
+    solved += du;
+    contact.follow_configuration(solved);
+    for (unsigned int j = 0; j < r.size(); ++j)
+      {
+        problem.gaps[j]          = contact.gap_at_start(j, start);
+        problem.obstacle_slip[j] = contact.prescribed_slip(j, obstacle_motion);
+        r[j]                     = contact.to_local(j, forces[j]);
+      }
   }
 
 

@@ -302,7 +302,17 @@ namespace FrictionalContact
       {
         nodes.push_back(node);
         facing_contact.insert(body_ids[node.body]);
+        // A finite-strain body moves far: its gaps to the obstacle are taken
+        // where it is, not linearised at the reference configuration.
+        nodes.back().follows =
+          node.pair < 0 && body.get_materials().of(body_ids[node.body]).elastic().finite_strain;
       }
+    any_follows = Utilities::MPI::logical_or(
+      std::any_of(nodes.begin(), nodes.end(), [](const Node &node) { return node.follows; }),
+      body.get_mpi_communicator());
+    followed_displacements.assign(any_follows ? nodes.size() : 0, Tensor<1, dim>());
+    followed_gaps.assign(any_follows ? nodes.size() : 0, 0.);
+    normal_gradients.assign(any_follows ? nodes.size() : 0, Tensor<2, dim>());
     for (const MortarInterface<dim> &interface : interfaces)
       facing_contact.insert(interface.master_bodies().begin(),
                             interface.master_bodies().end());
@@ -398,12 +408,54 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair < 0)
       {
-        const Tensor<1, dim> normal =
-          obstacle->outward_normal(nodes[j].position - displacement);
+        // A node that follows the configuration is where it was last
+        // followed (at first, its reference position).
+        const Point<dim> where =
+          nodes[j].follows ? nodes[j].position + followed_displacements[j] :
+                             nodes[j].position;
+        const Tensor<1, dim> normal = obstacle->outward_normal(where - displacement);
         nodes[j].into_obstacle = -normal;
         if (!tangents.empty())
           tangents[j] = tangents_to<dim>(normal);
+        if (nodes[j].follows)
+          {
+            followed_gaps[j]    = obstacle->signed_distance(where - displacement);
+            normal_gradients[j] = obstacle->normal_gradient(where - displacement);
+          }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::follow_configuration(const Vector &u)
+  {
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].follows)
+        {
+          const Tensor<1, dim> u_j = nodal_value(j, u);
+          const Point<dim> where = nodes[j].position + u_j - obstacle_shift;
+          followed_gaps[j]          = obstacle->signed_distance(where);
+          followed_displacements[j] = u_j;
+          const Tensor<1, dim> into = -obstacle->outward_normal(where);
+          normal_gradients[j]       = obstacle->normal_gradient(where);
+          nodes[j].into_obstacle = into;
+          if (!tangents.empty())
+            {
+              // The first tangent turned with the normal (continuous, so
+              // that the tangential reactions keep their meaning).
+              Tensor<1, dim> t = tangents[j][0] - (tangents[j][0] * into) * into;
+              if (t.norm() > 1e-3)
+                {
+                  tangents[j][0] = t / t.norm();
+                  if constexpr (dim == 3)
+                    tangents[j][1] = cross_product_3d(-into, tangents[j][0]);
+                }
+              else
+                tangents[j] = tangents_to<dim>(-into);
+            }
+        }
   }
 
 

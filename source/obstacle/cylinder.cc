@@ -89,6 +89,21 @@ namespace FrictionalContact
       return any / any.norm();
     }
 
+    template <int dim>
+    Tensor<2, dim>
+    Cylinder<dim>::normal_gradient(const Point<dim> &point) const
+    {
+      // (I - a a^T - n n^T) / |r|: the normal turns with the motion around
+      // the axis a (in 2D a = 0), not along it.
+      const double length = radial(point).norm();
+      if (!(length > 0))
+        return {};
+      const Tensor<1, dim> n = outward_normal(point);
+      return (Tensor<2, dim>(unit_symmetric_tensor<dim>()) - outer_product(axis, axis) -
+              outer_product(n, n)) /
+             length;
+    }
+
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(
       Interface,
       Cylinder,

@@ -56,6 +56,13 @@ namespace FrictionalContact
       return normal;
     }
 
+    template <int dim>
+    Tensor<2, dim>
+    Plane<dim>::normal_gradient(const Point<dim> &) const
+    {
+      return {};
+    }
+
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(
       Interface,
       Plane,

@@ -58,6 +58,18 @@ namespace FrictionalContact
       return any;
     }
 
+    template <int dim>
+    Tensor<2, dim>
+    Sphere<dim>::normal_gradient(const Point<dim> &point) const
+    {
+      // (I - n n^T) / |x - c|: the normal turns with the tangential motion.
+      const double length = (point - center).norm();
+      if (!(length > 0))
+        return {};
+      const Tensor<1, dim> n = outward_normal(point);
+      return (unit_symmetric_tensor<dim>() - outer_product(n, n)) / length;
+    }
+
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(
       Interface,
       Sphere,

@@ -213,6 +213,7 @@ namespace FrictionalContact
                      const ConditionPreconditioner<dim> &preconditioner,
                      ShiftedStiffnessSolver             &linear_solver,
                      const bool                          friction,
+                     const std::vector<Tensor<1, dim>>  &r,
                      const double                        reduction,
                      const double                        floor,
                      TrilinosWrappers::MPI::Vector      &du,
@@ -235,7 +236,10 @@ namespace FrictionalContact
                                     sets.slip_direction,
                                     sets.robin,
                                     any_slip,
-                                    problem.contact_held.stabilization);
+                                    problem.contact_held.stabilization,
+                                    problem.contact.frames_follow_configuration() ?
+                                      &r :
+                                      nullptr);
       // K du at du_D. A nonlinear law's N(du) and tangent were made at the
       // iterate (search_along_step()): evaluated again only where the node
       // conditions moved it by more than round-off.
@@ -662,6 +666,15 @@ namespace FrictionalContact
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
+        // Frames that follow the configuration are taken at the iterate,
+        // and its residuals with them.
+        if (k > 0 && problem.follow_geometry)
+          {
+            problem.follow_geometry(du, r);
+            contact.apply(r, work.T_r);
+            result.residuals = admissible_residuals(
+              problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);
+          }
         // Done when the residuals of the current iterate are small.
         if (k > 0 && meets(this->stop.tolerance, problem, du, work.K_du, result.residuals))
           {
@@ -713,7 +726,7 @@ namespace FrictionalContact
           {
             linear_iterations =
               solve_linearized(problem, sets, P, preconditioner, linear_solver, friction,
-                               forcing_term,
+                               r, forcing_term,
                                // The stopping rule's force: p, or K du where an
                                // obstacle drives the body without a load.
                                0.1 * this->stop.tolerance *

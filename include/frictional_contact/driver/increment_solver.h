@@ -170,6 +170,21 @@ namespace FrictionalContact
                   const bool             record_history,
                   TimerOutput           &timer);
 
+    /**
+     * Takes the obstacle's gaps and frames of @p contact at start + @p du
+     * into @p problem (gaps linearised there, and the tangential motion
+     * @p obstacle_motion in the new frames) and expresses @p r in them:
+     * the Newton method calls it at each iterate (finite strain against
+     * an obstacle). Collective.
+     */
+    static void
+    take_contact_geometry(ContactOperator<dim>                &contact,
+                          IncrementalProblem<dim>             &problem,
+                          const TrilinosWrappers::MPI::Vector &start,
+                          const Tensor<1, dim>                &obstacle_motion,
+                          const TrilinosWrappers::MPI::Vector &du,
+                          std::vector<Tensor<1, dim>>         &r);
+
     /// The geometric multigrid of K on the mesh's levels (for
     /// <Linear solver/Preconditioner> = geometric multigrid), given to the
     /// linear solver.

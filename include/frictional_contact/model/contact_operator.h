@@ -102,13 +102,67 @@ namespace FrictionalContact
     /**
      * The gap of candidate j at the start of an increment whose
      * displacement so far is @p start: from the obstacle's reference gap,
-     * or for a pair's slave node the mortar gap of update_pairs().
+     * for a candidate that follows the configuration from its gap there
+     * (follow_configuration()), or for a pair's slave node the mortar gap
+     * of update_pairs(). Linear in @p start.
      */
     double
     gap_at_start(const unsigned int j, const Vector &start) const
     {
-      return nodes[j].pair < 0 ? reference_gap(j) - local_part(j, start)[0] :
-                                 pair_gaps[j];
+      if (nodes[j].pair >= 0)
+        return pair_gaps[j];
+      if (nodes[j].follows)
+        return followed_gaps[j] -
+               to_local(j, nodal_value(j, start) - followed_displacements[j])[0];
+      return reference_gap(j) - local_part(j, start)[0];
+    }
+
+    /**
+     * Whether some candidate of a body at finite strain faces the obstacle
+     * (the same on all ranks): its gap and frame are then taken at the
+     * deformed configuration (follow_configuration()), not linearised at
+     * the reference one.
+     */
+    bool
+    follows_configuration() const
+    {
+      return any_follows;
+    }
+
+    /**
+     * Takes the gaps and frames of the candidates that follow the
+     * configuration at X + @p u (a locally owned vector) against the
+     * obstacle where it stands: the obstacle's normal and signed distance
+     * there, linearised about @p u.
+     */
+    void
+    follow_configuration(const Vector &u);
+
+    bool
+    frames_follow_configuration() const override
+    {
+      return any_follows;
+    }
+
+    /// f += r_n G_j u_j at a node that follows the configuration, with G_j
+    /// the gradient of the obstacle's outward normal there (t_n = -n).
+    void
+    add_frame_stiffness(const unsigned int j,
+                        const double       r_n,
+                        const Vector      &u,
+                        Vector            &f) const override
+    {
+      if (!nodes[j].follows)
+        return;
+      Tensor<1, dim> u_j = nodal_value(j, u);
+      for (unsigned int c = 0; c < dim; ++c)
+        if (!nodes[j].free[c])
+          u_j[c] = 0;
+      Tensor<1, dim> force = r_n * (normal_gradients[j] * u_j);
+      for (unsigned int c = 0; c < dim; ++c)
+        if (!nodes[j].free[c])
+          force[c] = 0;
+      add_nodal_value(j, force, f);
     }
 
     /**
@@ -398,6 +452,9 @@ namespace FrictionalContact
       std::array<unsigned int, dim> local_dofs;
       /// Whether the component is an unknown (not held by a fixed boundary).
       std::array<bool, dim> free;
+      /// Whether the node's gap and frame follow the configuration (a node
+      /// of a finite-strain body facing the obstacle).
+      bool follows = false;
       /// The pair whose slave node this is (-1: a candidate facing the
       /// obstacle); small, to sit in the padding after free.
       std::int16_t pair = -1;
@@ -444,6 +501,13 @@ namespace FrictionalContact
     std::vector<Node>                            nodes;
     /// T_t,j; empty without friction (the tangential operator is not needed).
     std::vector<std::array<Tensor<1, dim>, dim - 1>> tangents;
+    /// For the candidates that follow the configuration: the gap and the
+    /// displacement of the last follow_configuration() (0 elsewhere).
+    std::vector<double>                          followed_gaps;
+    std::vector<Tensor<1, dim>>                  followed_displacements;
+    /// The gradient of the obstacle's outward normal there.
+    std::vector<Tensor<2, dim>>                  normal_gradients;
+    bool                                         any_follows = false;
     std::unique_ptr<TimeFunction>                rigid_displacement;
     Tensor<1, dim>                               obstacle_shift;
     types::global_dof_index                      n_global = 0;

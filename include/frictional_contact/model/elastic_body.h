@@ -147,6 +147,13 @@ namespace FrictionalContact
       return bodies;
     }
 
+    /// The law of each body.
+    const Materials<dim> &
+    get_materials() const
+    {
+      return materials;
+    }
+
     /// The name of the body whose cells have material id @p id.
     std::string
     body_name(const types::material_id id) const

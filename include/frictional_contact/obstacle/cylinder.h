@@ -27,6 +27,9 @@ namespace FrictionalContact
       Tensor<1, dim>
       outward_normal(const Point<dim> &point) const override;
 
+      Tensor<2, dim>
+      normal_gradient(const Point<dim> &point) const override;
+
     private:
       /// The part of point - axis_point normal to the axis.
       Tensor<1, dim>

@@ -35,6 +35,12 @@ namespace FrictionalContact
       /// Unit outward normal at the surface point nearest to @p point.
       virtual Tensor<1, dim>
       outward_normal(const Point<dim> &point) const = 0;
+
+      /// The gradient of outward_normal() at @p point: the surface's
+      /// curvature, which the contact force of a body sliding over a curved
+      /// obstacle follows (zero for a plane).
+      virtual Tensor<2, dim>
+      normal_gradient(const Point<dim> &point) const = 0;
     };
   } // namespace Obstacle
 } // namespace FrictionalContact

@@ -26,6 +26,9 @@ namespace FrictionalContact
       Tensor<1, dim>
       outward_normal(const Point<dim> &point) const override;
 
+      Tensor<2, dim>
+      normal_gradient(const Point<dim> &point) const override;
+
     private:
       Point<dim>     point_on_plane;
       Tensor<1, dim> normal;

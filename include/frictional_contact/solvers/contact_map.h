@@ -80,6 +80,30 @@ namespace FrictionalContact
       return false;
     }
 
+    /**
+     * Whether the frames follow the configuration (T = T(x), finite
+     * strain against a curved obstacle): the Newton tangent then has the
+     * stiffness of the turning frames, add_frame_stiffness().
+     */
+    virtual bool
+    frames_follow_configuration() const
+    {
+      return false;
+    }
+
+    /**
+     * f += the change of the contact force T_j r_j of candidate j, its
+     * normal reaction @p r_n held, as its node moves by @p u: -r_n dt_n/dx
+     * u_j (t_n turns with the surface's curvature; nothing for fixed
+     * frames).
+     */
+    virtual void
+    add_frame_stiffness(const unsigned int /*j*/,
+                        const double /*r_n*/,
+                        const Vector & /*u*/,
+                        Vector & /*f*/) const
+    {}
+
     /// The largest singular value of T (the paper's sigma_T).
     virtual double
     largest_singular_value() const = 0;

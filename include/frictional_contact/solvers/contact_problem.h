@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <functional>
 #include <vector>
 
 namespace FrictionalContact
@@ -89,6 +90,15 @@ namespace FrictionalContact
     ContactHeldBodies contact_held;
     /// The internal force of nonlinear laws (nullptr: K du).
     NonlinearStiffness *nonlinear = nullptr;
+    /**
+     * Where the frames follow the configuration (finite strain against a
+     * curved obstacle): takes the gaps, frames and obstacle_slip of the
+     * contact at the iterate du, and expresses the reactions r in the new
+     * frames. Empty for fixed frames.
+     */
+    std::function<void(const TrilinosWrappers::MPI::Vector &du,
+                       std::vector<Tensor<1, dim>>         &r)>
+      follow_geometry;
 
     /// K du, or N(du) for nonlinear laws (then with @p with_tangent also
     /// the tangent at du as the stiffness).

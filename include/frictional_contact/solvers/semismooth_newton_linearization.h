@@ -73,8 +73,11 @@ namespace FrictionalContact
      * reads T_t^T R + mu n (t_n^T R) + kappa Q T_t^T du = 0 with R = K du - p:
      * r_t = -mu r_n n - kappa Q u_t, the linearisation of
      * r_t = mu |r_n| zeta / |zeta| (Q = I - n n^T, the tangential directions
-     * across the slip; B is this Robin term, zero in 2D). Without slipping
-     * nodes the operator is P K P, symmetric.
+     * across the slip; B is this Robin term, zero in 2D). Where the frames
+     * follow the configuration, K has the stiffness of the turning frames
+     * at the nodes in contact, r_n G_j (ContactMap::add_frame_stiffness(),
+     * from @p reactions; nullptr for fixed frames). Without slipping nodes
+     * the operator is P K P, symmetric.
      */
     template <int dim>
     class ContactStiffness
@@ -87,7 +90,8 @@ namespace FrictionalContact
                        const std::vector<Tensor<1, dim>>    &slip_direction,
                        const std::vector<double>            &robin,
                        const bool                            friction,
-                       const Vector                         &stabilization)
+                       const Vector                         &stabilization,
+                       const std::vector<Tensor<1, dim>>    *reactions = nullptr)
         : K(K)
         , P(P)
         , contact(contact)
@@ -96,6 +100,7 @@ namespace FrictionalContact
         , robin(robin)
         , friction(friction)
         , stabilization(stabilization)
+        , reactions(reactions)
       {}
 
       void
@@ -118,6 +123,10 @@ namespace FrictionalContact
             for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
               f[i] += S[i] * x[i];
           }
+        if (reactions != nullptr)
+          for (unsigned int j = 0; j < contact.n_local(); ++j)
+            if (conditions[j] != NodeCondition::none)
+              contact.add_frame_stiffness(j, (*reactions)[j][0], u, force);
         couple(force);
         add_robin(u, 1., force);
         P.apply(force);
@@ -168,6 +177,9 @@ namespace FrictionalContact
       const bool                            friction;
       /// The diagonal of S (empty: none).
       const Vector                         &stabilization;
+      /// The reactions of the iterate where the frames follow the
+      /// configuration (nullptr: fixed frames).
+      const std::vector<Tensor<1, dim>>    *reactions;
     };
 
     /// The node conditions of an active-set step and what goes with them.
