@@ -327,7 +327,34 @@ def finite_strain(root):
                      "increment in elastic solves", "finite / small"], body)
 
 
+def ironing(root):
+    """bench/ironing.py: each run's drag and press with the die in the
+    middle of its slide (t = 1.5), their change from the coarser mesh, and
+    the Newton steps of the whole run."""
+    runs = {}
+    for r in rows(root, "ironing.csv"):
+        runs.setdefault((r["mu"], int(r["level"])), []).append(r)
+    body, previous = [], {}
+    for (mu, level), mine in sorted(runs.items(), key=lambda k: (-float(k[0][0]), k[0][1])):
+        middle = min(mine, key=lambda r: abs(float(r["time"]) - 1.5))
+        drag, press = float(middle["drag"]), float(middle["press"])
+        change = ""
+        if mu in previous:
+            old_drag, old_press = previous[mu]
+            change = (f"{abs(drag - old_drag) / abs(drag):.2%}, "
+                      f"{abs(press - old_press) / abs(press):.2%}")
+        previous[mu] = (drag, press)
+        body.append([level, "frictionless" if float(mu) == 0 else mu, thousands(mine[0]["d"]),
+                     f"{drag:.4f}".replace("-0.0000", "0.0000"), f"{press:.4f}", change,
+                     sum(int(r["newton_iterations"]) for r in mine), len(mine),
+                     seconds(mine[0]["wall_s"])])
+    return markdown(["refinements", "friction", "d", "drag at t = 1.5", "press at t = 1.5",
+                     "change from the coarser mesh (drag, press)", "Newton steps",
+                     "increments", "run"], body)
+
+
 TABLES = {
+    "ironing": ironing,
     "finite-strain": finite_strain,
     "linear-speed": linear_speed,
     "step42": step42,

@@ -130,8 +130,9 @@ def obstacle_source(simple, entries, dim, t, bounds):
         centre = [c + s for c, s in zip(vector(entries[prefix + key], dim), shift)]
         radius = float(entries[prefix + model.capitalize() + "/Radius"])
         if dim == 2:
-            return simple.RegularPolygon(Center=centre, Radius=radius,
-                                         NumberofSides=180, OutlineOnly=1)
+            return simple.Ellipse(Center=centre, Normal=[0, 0, 1],
+                                  MajorRadiusVector=[radius, 0, 0], Ratio=1,
+                                  SectorAngle=360, Resolution=180, Close=1)
         if model == "sphere":
             return simple.Sphere(Center=centre, Radius=radius,
                                  ThetaResolution=64, PhiResolution=64)
@@ -319,13 +320,14 @@ def main():
             obstacle_display = simple.Show(obstacle, views[0])
             obstacle_display.DiffuseColor = [0.45, 0.45, 0.45]
             obstacle_display.Opacity = 0.5 if dim == 3 else 1.0
-        for display in (body, pressure):
-            display.RescaleTransferFunctionToDataRange(False, True)
         # Views 2 and 3: the zone in contact with a margin of half its size
         # on each side (so that the free end of a pressed face shows),
         # within the candidate face.
         face.UpdatePipeline(t)
         touching.UpdatePipeline(t)
+        # The colour ranges of this time (the face brought to it first).
+        for display in (body, pressure):
+            display.RescaleTransferFunctionToDataRange(False, True)
         zone = face.GetDataInformation().GetBounds() \
             if face.GetDataInformation().GetNumberOfCells() > 0 else bounds
         if cut is not None:

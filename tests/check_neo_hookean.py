@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Checks a run of a neo-Hookean block compressed between rollers and a
-frictionless rigid plane (tests/neo_hookean_compression_*.prm) against the
-homogeneous uniaxial solution of the law W = mu/2 (tr C - 3) - mu ln J +
-lambda/2 (ln J)^2, which the Q1 element holds exactly at any stretch.
+frictionless rigid plane (tests/neo_hookean_compression_*.prm,
+tests/nearly_incompressible_compression_*.prm) against the homogeneous
+uniaxial solution of its law, which the Q1 element holds exactly at any
+stretch: 'neo-Hookean', W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2,
+or 'nearly incompressible neo-Hookean', W = mu/2 (J^-2/3 tr C - 3) +
+kappa/4 (J^2 - 1 - 2 ln J) (its cell's mean volume ratio is J itself).
 
 With lambda_1 the axial stretch (the last axis: y in 2D, z in 3D) and
 lambda_2 the lateral one (plane strain: the out-of-plane stretch is 1), the
@@ -11,6 +14,9 @@ lateral stress vanishes where
 the axial second Piola-Kirchhoff stress is S = mu (1 - lambda_1^-2) +
 lambda ln J lambda_1^-2, the Cauchy stress lambda_1^2 S / J, the nominal
 contact pressure -lambda_1 S, and in plane strain sigma_zz = lambda ln J / J.
+For the split law the principal Cauchy stresses are sigma_i = mu J^-5/3
+(lambda_i^2 - I_1/3) + kappa/2 (J - 1/J) (I_1 over the three stretches, the
+out-of-plane one 1 in plane strain), and lambda_2 makes sigma_2 vanish.
 
 usage: check_neo_hookean.py OUTPUT_DIR --tolerance 1e-10
 
@@ -51,6 +57,45 @@ def lateral_stretch(axial, mu, lam, dim):
     return stretch
 
 
+def split_law_stresses(axial, lateral, mu, kappa, dim):
+    """The principal Cauchy stresses (axial, lateral, out of plane) of the
+    nearly incompressible law at the stretches (axial, lateral)."""
+    stretches = [axial] + [lateral] * (dim - 1) + ([1.0] if dim == 2 else [])
+    J = axial * lateral ** (dim - 1)
+    first = sum(x * x for x in stretches)
+    pressure = kappa / 2 * (J - 1 / J)
+    return [mu * J ** (-5 / 3) * (x * x - first / 3) + pressure for x in stretches]
+
+
+def split_law_lateral_stretch(axial, mu, kappa, dim):
+    """lambda_2 where the lateral stress of the split law vanishes (secant)."""
+    a, b = 1.0, 1.01
+    fa = split_law_stresses(axial, a, mu, kappa, dim)[1]
+    fb = split_law_stresses(axial, b, mu, kappa, dim)[1]
+    for _ in range(200):
+        if fb == fa:
+            break
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        fb = split_law_stresses(axial, b, mu, kappa, dim)[1]
+        if abs(b - a) < 1e-15:
+            break
+    return b
+
+
+def uniaxial(axial, law, mu, lam, kappa, dim):
+    """(lateral stretch, J, axial Cauchy stress, sigma_zz in plane strain,
+    axial second Piola-Kirchhoff stress) at the axial stretch."""
+    if law == "nearly incompressible neo-Hookean":
+        lateral = split_law_lateral_stretch(axial, mu, kappa, dim)
+        J = axial * lateral ** (dim - 1)
+        stresses = split_law_stresses(axial, lateral, mu, kappa, dim)
+        return lateral, J, stresses[0], stresses[-1], J * stresses[0] / axial ** 2
+    lateral = lateral_stretch(axial, mu, lam, dim)
+    J = axial * lateral ** (dim - 1)
+    S = mu * (1 - axial ** -2) + lam * math.log(J) * axial ** -2
+    return lateral, J, axial ** 2 * S / J, lam * math.log(J) / J, S
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("output")
@@ -63,6 +108,8 @@ def main():
     nu = float(parameters["Material/Poisson's ratio"])
     mu = E / (2 * (1 + nu))
     lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    kappa = E / (3 * (1 - 2 * nu))
+    law = parameters.get("Material/Model", "neo-Hookean")
     axes = "xyz"[:dim]
     axis = axes[-1]
 
@@ -79,10 +126,7 @@ def main():
         top = [v for v in vertices if abs(v[axis] - height) < 1e-12]
         axial = 1 + top[0]["u" + axis] / height
         smallest_stretch = min(smallest_stretch, axial)
-        lateral = lateral_stretch(axial, mu, lam, dim)
-        J = axial * lateral ** (dim - 1)
-        S = mu * (1 - axial ** -2) + lam * math.log(J) * axial ** -2
-        cauchy = axial ** 2 * S / J
+        lateral, J, cauchy, out_of_plane, S = uniaxial(axial, law, mu, lam, kappa, dim)
         scale_u = max(abs(v["u" + a]) for v in vertices for a in axes)
         for v in vertices:
             for a in axes:
@@ -93,7 +137,7 @@ def main():
             exact = {"s" + a + b: 0.0 for a in axes for b in axes}
             exact["s" + axis + axis] = cauchy
             if dim == 2:
-                exact["szz"] = lam * math.log(J) / J
+                exact["szz"] = out_of_plane
             for name, value in exact.items():
                 if name in cell:
                     error = abs(cell[name] - value) / abs(cauchy)

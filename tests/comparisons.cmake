@@ -506,7 +506,9 @@ endforeach()
 # by 30 % onto a frictionless plane, its displacement, Cauchy stress, det F
 # and nominal contact pressure those of the uniaxial solution of the law
 # in every increment, to 1e-10 (check_neo_hookean.py).
-foreach(_test neo_hookean_compression_2d neo_hookean_compression_3d.mpirun=2)
+foreach(_test neo_hookean_compression_2d neo_hookean_compression_3d.mpirun=2
+              nearly_incompressible_compression_2d
+              nearly_incompressible_compression_3d.mpirun=2)
   string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
   add_test(NAME ${_test}.exact
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_neo_hookean.py
@@ -563,3 +565,13 @@ add_test(NAME o_ring_convergence
           ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/o_ring_convergence)
 set_tests_properties(o_ring_convergence PROPERTIES ENVIRONMENT "${_environment}")
+
+# Ironing (a rigid cylinder slid over a neo-Hookean block at finite strain)
+# on 2 ranks, frictionless and with friction: the pressing nodes lie on the
+# die, mirrored forces, full slip inside the cone (ironing.sh).
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/ironing)
+add_test(NAME ironing.mpirun=2
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/ironing.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/ironing)
+set_tests_properties(ironing.mpirun=2 PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)

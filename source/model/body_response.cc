@@ -105,7 +105,7 @@ namespace FrictionalContact
     scratch.finite_strain = law.elastic().finite_strain;
 
     std::fill(scratch.mean_divergence.begin(), scratch.mean_divergence.end(), 0.);
-    double volume = 0, mean_dilatation = 0;
+    double volume = 0, mean_dilatation = 0, mean_volume_ratio = 0;
     std::vector<SymmetricTensor<2, dim>> &strain = scratch.strain;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
@@ -142,10 +142,13 @@ namespace FrictionalContact
             scratch.jacobian[q] = 1.;
           }
         mean_dilatation += trace(strain[q]) * JxW;
+        mean_volume_ratio += scratch.jacobian[q] * JxW;
       }
     for (double &d : scratch.mean_divergence)
       d /= volume;
     mean_dilatation /= volume;
+    mean_volume_ratio /= volume;
+    scratch.averages_volume_change = law.averages_volume_change();
 
     const bool          b_bar     = law.elastic().mean_dilatation;
     const unsigned int  n_history = law.n_history_values();
@@ -156,7 +159,9 @@ namespace FrictionalContact
         scratch.responses[q] = MaterialResponse<dim>();
       else
         law.evaluate(strain[q],
-                   b_bar ? mean_dilatation : trace(strain[q]),
+                   scratch.averages_volume_change ? mean_volume_ratio :
+                   b_bar                          ? mean_dilatation :
+                                                    trace(strain[q]),
                    committed == nullptr ? nullptr : committed + q * n_history,
                    with_tangent,
                    scratch.responses[q],
@@ -261,12 +266,19 @@ namespace FrictionalContact
     // The shape function of dof (a, c) is N_a e_c, its gradient e_c (x)
     // Grad N_a: the force is (F S)_cJ dN_a/dX_J, the material part of the
     // matrix dN_a/dX_J F_cI C_IJKL F_dK dN_b/dX_L, the geometric part
-    // delta_cd Grad N_a . S Grad N_b.
+    // delta_cd Grad N_a . S Grad N_b. A law of the cell's mean volume
+    // ratio theta adds the coupling through theta: h_ac g_bd, with h_ac =
+    // int (F dS/dtheta)_cJ dN_a/dX_J and g_bd = d theta/du_bd = int J
+    // (F^-T Grad N_b)_d / V.
     const unsigned int n_vertices = scratch.dof.size();
     const auto        &dof        = scratch.dof;
+    const bool         averages   = scratch.averages_volume_change;
     scratch.force                 = 0;
     if (with_tangent)
       scratch.matrix = 0;
+    double h[GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double g[GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double volume                                       = 0;
     for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
       {
         const double                 JxW = scratch.fe_values.JxW(q);
@@ -280,6 +292,18 @@ namespace FrictionalContact
             scratch.force(dof[a][c]) += (P[c] * G[a]) * JxW;
         if (!with_tangent)
           continue;
+        if (averages && scratch.jacobian[q] > 0)
+          {
+            volume += JxW;
+            const Tensor<2, dim> F_dS = F * Tensor<2, dim>(r.stress_by_volumetric_strain);
+            const Tensor<2, dim> cofactor = scratch.jacobian[q] * transpose(invert(F));
+            for (unsigned int a = 0; a < n_vertices; ++a)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  h[a][c] += (F_dS[c] * G[a]) * JxW;
+                  g[a][c] += (cofactor[c] * G[a]) * JxW;
+                }
+          }
         // The first elasticity tensor A = dP/dF: A_cJdL = F_cI C_IJKL F_dK +
         // delta_cd S_JL, with C the law's dS/dE (its volumetric part
         // c1 (x) I); then T_b[c][J][d] = A_cJdL dN_b/dX_L, and the entry of
@@ -290,7 +314,8 @@ namespace FrictionalContact
             for (unsigned int d = 0; d < dim; ++d)
               for (unsigned int L = 0; L < dim; ++L)
                 {
-                  double sum = r.stress_by_volumetric_strain[I][J] * F[d][L];
+                  double sum =
+                    averages ? 0. : r.stress_by_volumetric_strain[I][J] * F[d][L];
                   for (unsigned int K = 0; K < dim; ++K)
                     sum += r.stress_by_strain[I][J][K][L] * F[d][K];
                   CF[I][J][d][L] = sum;
@@ -330,6 +355,12 @@ namespace FrictionalContact
       }
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);
+    if (with_tangent && averages)
+      for (unsigned int a = 0; a < n_vertices; ++a)
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int b = 0; b < n_vertices; ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              scratch.matrix(dof[a][c], dof[b][d]) += h[a][c] * g[b][d] / volume;
   }
 
 

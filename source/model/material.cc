@@ -50,9 +50,11 @@ namespace FrictionalContact
       "'finite strain' (total Lagrangian: F = I + Grad u, the law gives "
       "the second Piola-Kirchhoff stress of the Green-Lagrange strain, the "
       "tangent has its geometric part; tractions and pressures stay dead "
-      "loads per reference area). 'neo-Hookean' needs finite strain; "
-      "'linear elastic' at finite strain is the St. Venant-Kirchhoff law; "
-      "finite strain takes the standard element.");
+      "loads per reference area). 'neo-Hookean' and 'nearly incompressible "
+      "neo-Hookean' need finite strain; 'linear elastic' at finite strain "
+      "is the St. Venant-Kirchhoff law; finite strain takes the standard "
+      "element (the nearly incompressible law averages the volume ratio "
+      "over each cell itself).");
   }
 
 
@@ -344,7 +346,8 @@ namespace FrictionalContact
           Input::fail(material.path_of("Kinematics"), "finite strain",
                       "the law '" + law + "' of the body '" + name +
                         "' is written for small strain only: take "
-                        "'neo-Hookean' or 'linear elastic' at finite strain");
+                        "'neo-Hookean', 'nearly incompressible neo-Hookean' or "
+                        "'linear elastic' at finite strain");
         if (!finite_strain && materials[id]->needs_finite_strain())
           Input::fail(material.path_of("Kinematics"), "small strain",
                       "the law '" + law + "' of the body '" + name +

@@ -237,6 +237,19 @@ namespace FrictionalContact
       return false;
     }
 
+    /**
+     * Whether the law's volumetric strain is the cell's mean volume ratio
+     * theta (the mean of det F over the cell: a mean-dilatation element at
+     * finite strain), not the point's: the body then passes theta to
+     * evaluate(), and the law gives dS/dtheta as stress_by_volumetric_strain,
+     * which the body couples over the cell.
+     */
+    virtual bool
+    averages_volume_change() const
+    {
+      return false;
+    }
+
     /// How many history values a quadrature point keeps (0: none).
     virtual unsigned int
     n_history_values() const
