@@ -1,0 +1,94 @@
+// The finite-strain element's tangent against central differences of its
+// internal force, for each law at finite strain (St. Venant-Kirchhoff, the
+// compressible neo-Hookean law, the nearly incompressible one with its
+// coupling through the cell's mean volume ratio): a ball's mesh (distorted
+// cells) under a smooth displacement of 20 % strains, K_T v compared with
+// (f(u + h v) - f(u - h v)) / 2h for a direction v over every free dof.
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/driver/increment_response.h>
+#include <frictional_contact/driver/simulator.h>
+#include <frictional_contact/model/model.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace FrictionalContact;
+
+namespace
+{
+  template <int dim>
+  void
+  check(const std::string &law)
+  {
+    ParameterHandler prm;
+    Simulator<dim>::declare_parameters(prm);
+    prm.parse_input_from_string("subsection Geometry\n  set Model name = half ball\nend\n"
+                                "subsection Mesh refinement\n  set Global refinements = 1\nend\n"
+                                "subsection Material\n  set Model = " + law +
+                                "\n  set Kinematics = finite strain\n"
+                                "  set Poisson's ratio = 0.45\nend\n"
+                                "subsection Boundary conditions\n  set Fixed boundaries = top\nend\n");
+    Model<dim> model(prm, MPI_COMM_WORLD);
+    model.setup();
+    model.assemble();
+    const ElasticBody<dim> &body = model.get_body();
+
+    // u: a smooth field of about 20 % strain; v: another one.
+    using Vector = TrilinosWrappers::MPI::Vector;
+    Vector u = body.make_vector(), v = body.make_vector();
+    const IndexSet &owned = body.locally_owned_dofs();
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int vertex : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const auto        g = cell->vertex_dof_index(vertex, c);
+              const Point<dim> &x = cell->vertex(vertex);
+              if (!owned.is_element(g))
+                continue;
+              u[g] = 0.2 * std::sin(1.3 * x[0] + 0.7 * x[dim - 1] + c);
+              v[g] = std::cos(2.1 * x[0] - 0.4 * x[dim - 1] + 2. * c);
+            }
+    u.compress(VectorOperation::insert);
+    v.compress(VectorOperation::insert);
+    body.get_constraints().set_zero(v);
+
+    // K_T(u) v from the response at u (N(du) = f(u + du) - f(u)).
+    IncrementResponse<dim> response(model, nullptr, u);
+    Vector K_v = body.make_vector(), plus = body.make_vector(), minus = body.make_vector();
+    body.stiffness().vmult(K_v, v);
+    const double h = 1e-6;
+    Vector step = v;
+    step *= h;
+    response.internal_force_change(step, plus, false);
+    step *= -1.;
+    response.internal_force_change(step, minus, false);
+    plus -= minus;
+    plus /= 2 * h;
+    const double difference = [&] {
+      Vector d = plus;
+      d -= K_v;
+      return d.l2_norm() / K_v.l2_norm();
+    }();
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << dim << "D, " << law << ": K_T v against central differences: "
+                << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
+    if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "  relative difference " << difference << std::endl;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  for (const std::string law :
+       {"linear elastic", "neo-Hookean", "nearly incompressible neo-Hookean"})
+    {
+      check<2>(law);
+      check<3>(law);
+    }
+}
