@@ -23,6 +23,50 @@ namespace FrictionalContact
 
 
   template <int dim>
+  IncrementResponse<dim>::IncrementResponse(Model<dim>   &model,
+                                            const Vector &start,
+                                            const Vector &lifting)
+    : model(model)
+    , mortar(nullptr)
+    , start(start)
+    , force_at_start(model.get_body().make_vector())
+    , u(force_at_start)
+    , u_ghosted(model.get_body().make_ghosted_vector())
+    , force(force_at_start)
+    , du_in_u(force_at_start)
+    , linear(true)
+  {
+    // f_int and the tangent at u^l = u_0 - lifting; the derivative along
+    // the lifting by a difference quotient over a small part of it.
+    const AffineConstraints<double> &constraints = model.get_body().get_constraints();
+    const double                     size        = lifting.linfty_norm();
+    Vector                           ahead       = force_at_start;
+    u                                            = start;
+    u -= lifting;
+    double epsilon = 0;
+    if (size > 0)
+      {
+        epsilon = 1e-7 * std::max(start.linfty_norm(), size) / size;
+        u.add(epsilon, lifting);
+        u_ghosted = u;
+        model.get_response().internal_force(u_ghosted, constraints, ahead, nullptr);
+        u.add(-epsilon, lifting);
+      }
+    u_ghosted = u;
+    plastic   = model.update_tangent(u_ghosted, force);
+    scale     = model.get_response().element_force_norm();
+    // f_int(u^l) + (f_int(u^l + eps lifting) - f_int(u^l)) / eps.
+    force_at_start = force;
+    if (size > 0)
+      {
+        ahead -= force;
+        force_at_start.add(1. / epsilon, ahead);
+      }
+  }
+
+
+
+  template <int dim>
   void
   IncrementResponse<dim>::evaluate(const Vector &du, const bool with_tangent)
   {
@@ -51,6 +95,13 @@ namespace FrictionalContact
                                                 Vector       &dst,
                                                 const bool    with_tangent)
   {
+    if (linear && !with_tangent)
+      {
+        // The linearised start: K_T(u^l) du.
+        model.get_body().stiffness().vmult(dst, du);
+        return;
+      }
+    linear = false;
     if (mortar != nullptr)
       mortar->displacement_to_u(du, du_in_u);
     else

@@ -292,8 +292,12 @@ namespace FrictionalContact
     if (model.nonlinear())
       {
         TimerOutput::Scope scope(timer, "Assembly");
+        // At finite strain the first Newton step is linearised at u^l
+        // (the moved boundary alone squashes the cells beside it).
         outcome.response =
-          std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start);
+          model.get_materials().any_finite_strain() && !mortar ?
+            std::make_unique<IncrementResponse<dim>>(model, start, lifting) :
+            std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start);
         load = outcome.response->start_force();
       }
     else

@@ -25,7 +25,21 @@ namespace FrictionalContact
     /// increment's basis of contact pairs (nullptr without).
     IncrementResponse(Model<dim> &model, MortarBasis<dim> *mortar, const Vector &start);
 
-    /// f_int(u_0), in u.
+    /**
+     * A linearised start (finite strain, without contact pairs): the
+     * increment starts from u_0 = u^l + @p lifting, the prescribed
+     * increment, which alone squashes the cells beside the moved boundary
+     * far from equilibrium. Instead of f_int(u_0), the reference force is
+     * its linearisation at u^l, f_int(u^l) + K_T(u^l) lifting (the
+     * directional derivative by a difference quotient), and until the
+     * first evaluation with the tangent N(du) is linear, K_T(u^l) du: the
+     * first Newton step is that of the linearisation at u^l with the
+     * prescribed increment as its constraint. The force balance is that of
+     * f_int(u_0 + du) throughout.
+     */
+    IncrementResponse(Model<dim> &model, const Vector &start, const Vector &lifting);
+
+    /// The reference force f_int(u_0) (or its linearisation), in u.
     const Vector &
     start_force() const
     {
@@ -59,5 +73,8 @@ namespace FrictionalContact
     Vector                  force_at_start, u, u_ghosted, force, du_in_u;
     types::global_dof_index plastic = 0;
     double                  scale   = 0;
+    /// Whether N is still linear (a linearised start before the first
+    /// evaluation with the tangent).
+    bool linear = false;
   };
 } // namespace FrictionalContact
