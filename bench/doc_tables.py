@@ -353,7 +353,33 @@ def ironing(root):
                      "increments", "run"], body)
 
 
+def o_ring_locking(root):
+    """bench/o_ring_locking.py: per Poisson's ratio and law, the force at
+    the end on each level (or what stopped the run), with its cuts and
+    wall time."""
+    runs = {}
+    for r in rows(root, "o-ring-locking.csv"):
+        runs.setdefault((r["nu"], r["law"]), []).append(r)
+    levels = sorted({int(r["level"]) for mine in runs.values() for r in mine})
+    body = []
+    for (nu, law), mine in runs.items():
+        cells = []
+        for level in levels:
+            r = next((r for r in mine if int(r["level"]) == level), None)
+            if r is None:
+                cells.append("")
+            elif r["outcome"] == "done":
+                cells.append(f"{float(r['force']):.4f} ({r['cuts']} cuts, "
+                             f"{seconds(r['wall_s'])})")
+            else:
+                cells.append(f"{r['outcome']} ({r['cuts']} cuts)")
+        body.append([nu, law] + cells)
+    return markdown(["nu", "law"] + [f"{level} levels: force (cuts, run)" for level in levels],
+                    body)
+
+
 TABLES = {
+    "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,
     "linear-speed": linear_speed,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The ironing scene (parameters/ironing_2d.prm: a rigid cylinder pressed into
-# a neo-Hookean block at finite strain and slid along it) on its coarse mesh,
+# a neo-Hookean block at finite strain and slid along it) on cells of 0.5,
 # on 2 ranks, frictionless and with mu = 0.3 (tests/check_ironing.py):
 # the nodes that press on the die lie on its surface and no vertex inside it,
 # mirrored forces at mirrored die positions without friction, full slip and
@@ -18,6 +18,12 @@ for mu in 0 0.3; do
   cat > mu-$mu.prm <<EOT
 include $source_dir/parameters/ironing_2d.prm
 set Output directory = out-$mu
+subsection Geometry
+  subsection Box
+    set X repetitions = 18
+    set Y repetitions = 6
+  end
+end
 subsection Mesh refinement
   set Global refinements = 0
 end
