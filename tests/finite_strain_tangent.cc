@@ -1,8 +1,9 @@
 // The finite-strain element's tangent against central differences of its
 // internal force, for each law at finite strain (St. Venant-Kirchhoff, the
 // compressible neo-Hookean law, the nearly incompressible one with its
-// coupling through the cell's mean volume ratio): a ball's mesh (distorted
-// cells) under a smooth displacement of 20 % strains, K_T v compared with
+// coupling through the cell's mean volume ratio, or the point's): a ball's
+// mesh (distorted cells) under a smooth displacement of 20 % strains, K_T v
+// compared with
 // (f(u + h v) - f(u - h v)) / 2h for a direction v over every free dof.
 #include <deal.II/base/mpi.h>
 
@@ -19,7 +20,7 @@ namespace
 {
   template <int dim>
   void
-  check(const std::string &law)
+  check(const std::string &law, const std::string &volume_ratio = "")
   {
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
@@ -27,7 +28,12 @@ namespace
                                 "subsection Mesh refinement\n  set Global refinements = 1\nend\n"
                                 "subsection Material\n  set Model = " + law +
                                 "\n  set Kinematics = finite strain\n"
-                                "  set Poisson's ratio = 0.45\nend\n"
+                                "  set Poisson's ratio = 0.45\n" +
+                                (volume_ratio.empty() ?
+                                   std::string() :
+                                   "  subsection Nearly incompressible neo-Hookean\n"
+                                   "    set Volume ratio = " + volume_ratio + "\n  end\n") +
+                                "end\n"
                                 "subsection Boundary conditions\n  set Fixed boundaries = top\nend\n");
     Model<dim> model(prm, MPI_COMM_WORLD);
     model.setup();
@@ -72,7 +78,9 @@ namespace
       return d.l2_norm() / K_v.l2_norm();
     }();
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << dim << "D, " << law << ": K_T v against central differences: "
+      std::cout << dim << "D, " << law
+                << (volume_ratio.empty() ? "" : " (volume ratio: " + volume_ratio + ")")
+                << ": K_T v against central differences: "
                 << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
     if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << "  relative difference " << difference << std::endl;
@@ -91,4 +99,6 @@ main(int argc, char *argv[])
       check<2>(law);
       check<3>(law);
     }
+  check<2>("nearly incompressible neo-Hookean", "point");
+  check<3>("nearly incompressible neo-Hookean", "point");
 }

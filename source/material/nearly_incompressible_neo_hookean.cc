@@ -1,3 +1,4 @@
+#include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/material.h>
 
@@ -27,8 +28,17 @@ namespace FrictionalContact
     {
     public:
       static void
-      declare_parameters(ParameterHandler &)
-      {}
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Volume ratio",
+                          "cell mean",
+                          Patterns::Anything(),
+                          "theta in U(theta): 'cell mean', the mean of det F "
+                          "over the cell (the mean-dilatation element, which "
+                          "does not lock), or 'point', det F at each Gauss "
+                          "point (the standard element, which locks as nu "
+                          "approaches 1/2: for comparison).");
+      }
 
       void
       parse_parameters(const BodyEntries &material, const BodyEntries &own) override
@@ -36,6 +46,10 @@ namespace FrictionalContact
         MaterialModel<dim>::parse_parameters(material, own);
         mu    = this->elastic().shear_modulus;
         kappa = this->elastic().bulk_modulus_3d;
+        const std::string ratio = own.get("Volume ratio");
+        if (ratio != "cell mean" && ratio != "point")
+          Input::fail(own.path_of("Volume ratio"), ratio, "'cell mean' or 'point' is expected");
+        cell_mean = ratio == "cell mean";
       }
 
       bool
@@ -56,14 +70,15 @@ namespace FrictionalContact
         return true;
       }
 
-      bool
-      averages_volume_change() const override
+      typename MaterialModel<dim>::VolumeRatio
+      volume_ratio() const override
       {
-        return true;
+        return cell_mean ? MaterialModel<dim>::VolumeRatio::cell_mean :
+                           MaterialModel<dim>::VolumeRatio::point;
       }
 
-      /// @p strain: the Green-Lagrange strain E; @p mean_volume_ratio: the
-      /// cell's theta.
+      /// @p strain: the Green-Lagrange strain E; @p mean_volume_ratio:
+      /// theta (the cell's mean of det F, or the point's).
       void
       evaluate(const SymmetricTensor<2, dim> &strain,
                const double                   mean_volume_ratio,
@@ -123,8 +138,9 @@ namespace FrictionalContact
       }
 
     private:
-      double mu    = 0;
-      double kappa = 0;
+      double mu        = 0;
+      double kappa     = 0;
+      bool   cell_mean = true;
     };
 
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(

@@ -148,7 +148,8 @@ namespace FrictionalContact
       d /= volume;
     mean_dilatation /= volume;
     mean_volume_ratio /= volume;
-    scratch.averages_volume_change = law.averages_volume_change();
+    scratch.volume_ratio = law.volume_ratio();
+    using VolumeRatio    = typename MaterialModel<dim>::VolumeRatio;
 
     const bool          b_bar     = law.elastic().mean_dilatation;
     const unsigned int  n_history = law.n_history_values();
@@ -159,9 +160,10 @@ namespace FrictionalContact
         scratch.responses[q] = MaterialResponse<dim>();
       else
         law.evaluate(strain[q],
-                   scratch.averages_volume_change ? mean_volume_ratio :
-                   b_bar                          ? mean_dilatation :
-                                                    trace(strain[q]),
+                   scratch.volume_ratio == VolumeRatio::cell_mean ? mean_volume_ratio :
+                   scratch.volume_ratio == VolumeRatio::point     ? scratch.jacobian[q] :
+                   b_bar                                          ? mean_dilatation :
+                                                                    trace(strain[q]),
                    committed == nullptr ? nullptr : committed + q * n_history,
                    with_tangent,
                    scratch.responses[q],
@@ -266,19 +268,23 @@ namespace FrictionalContact
     // The shape function of dof (a, c) is N_a e_c, its gradient e_c (x)
     // Grad N_a: the force is (F S)_cJ dN_a/dX_J, the material part of the
     // matrix dN_a/dX_J F_cI C_IJKL F_dK dN_b/dX_L, the geometric part
-    // delta_cd Grad N_a . S Grad N_b. A law of the cell's mean volume
-    // ratio theta adds the coupling through theta: h_ac g_bd, with h_ac =
-    // int (F dS/dtheta)_cJ dN_a/dX_J and g_bd = d theta/du_bd = int J
-    // (F^-T Grad N_b)_d / V.
+    // delta_cd Grad N_a . S Grad N_b. A law of a volume ratio theta adds
+    // the coupling through it: for the cell's mean, h_ac g_bd / V with
+    // h_ac = int (F dS/dtheta)_cJ dN_a/dX_J and g_bd = int J (F^-T Grad
+    // N_b)_d (V d theta/du_bd); for the point's J, the same products at
+    // each point.
+    using VolumeRatio             = typename MaterialModel<dim>::VolumeRatio;
     const unsigned int n_vertices = scratch.dof.size();
     const auto        &dof        = scratch.dof;
-    const bool         averages   = scratch.averages_volume_change;
+    const bool         averages   = scratch.volume_ratio != VolumeRatio::none;
+    const bool         pointwise  = scratch.volume_ratio == VolumeRatio::point;
     scratch.force                 = 0;
     if (with_tangent)
       scratch.matrix = 0;
-    double h[GeometryInfo<dim>::vertices_per_cell][dim] = {};
-    double g[GeometryInfo<dim>::vertices_per_cell][dim] = {};
-    double volume                                       = 0;
+    constexpr unsigned int n_points = GeometryInfo<dim>::vertices_per_cell; // 2^dim Gauss points
+    double h[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double g[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double volume                                                 = 0;
     for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
       {
         const double                 JxW = scratch.fe_values.JxW(q);
@@ -297,11 +303,13 @@ namespace FrictionalContact
             volume += JxW;
             const Tensor<2, dim> F_dS = F * Tensor<2, dim>(r.stress_by_volumetric_strain);
             const Tensor<2, dim> cofactor = scratch.jacobian[q] * transpose(invert(F));
+            // For the cell's mean, every point adds to the first row.
+            const unsigned int row = pointwise ? q : 0;
             for (unsigned int a = 0; a < n_vertices; ++a)
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  h[a][c] += (F_dS[c] * G[a]) * JxW;
-                  g[a][c] += (cofactor[c] * G[a]) * JxW;
+                  h[row][a][c] += (F_dS[c] * G[a]) * JxW;
+                  g[row][a][c] += (cofactor[c] * G[a]) * (pointwise ? 1. : JxW);
                 }
           }
         // The first elasticity tensor A = dP/dF: A_cJdL = F_cI C_IJKL F_dK +
@@ -356,11 +364,13 @@ namespace FrictionalContact
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);
     if (with_tangent && averages)
-      for (unsigned int a = 0; a < n_vertices; ++a)
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int b = 0; b < n_vertices; ++b)
-            for (unsigned int d = 0; d < dim; ++d)
-              scratch.matrix(dof[a][c], dof[b][d]) += h[a][c] * g[b][d] / volume;
+      for (unsigned int row = 0; row < (pointwise ? n_points : 1); ++row)
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int b = 0; b < n_vertices; ++b)
+              for (unsigned int d = 0; d < dim; ++d)
+                scratch.matrix(dof[a][c], dof[b][d]) +=
+                  h[row][a][c] * g[row][b][d] / (pointwise ? 1. : volume);
   }
 
 

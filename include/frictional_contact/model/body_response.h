@@ -151,9 +151,10 @@ namespace FrictionalContact
       /// smallest det F met since the scratch was made, and where.
       std::vector<SymmetricTensor<2, dim>>     strain;
       bool                                     finite_strain = false;
-      /// Whether the cell's law takes its mean volume ratio
-      /// (MaterialModel::averages_volume_change()).
-      bool                                     averages_volume_change = false;
+      /// Which volume ratio the cell's law takes
+      /// (MaterialModel::volume_ratio()).
+      typename MaterialModel<dim>::VolumeRatio volume_ratio =
+        MaterialModel<dim>::VolumeRatio::none;
       /// F and det F at the points of a finite-strain cell.
       std::vector<Tensor<2, dim>>              deformation_gradient;
       std::vector<double>                      jacobian;

@@ -238,16 +238,24 @@ namespace FrictionalContact
     }
 
     /**
-     * Whether the law's volumetric strain is the cell's mean volume ratio
-     * theta (the mean of det F over the cell: a mean-dilatation element at
-     * finite strain), not the point's: the body then passes theta to
-     * evaluate(), and the law gives dS/dtheta as stress_by_volumetric_strain,
-     * which the body couples over the cell.
+     * Whether the law's volumetric strain is a volume ratio theta (finite
+     * strain), and which: the cell's mean of det F (a mean-dilatation
+     * element) or the point's det F (the standard element). The body then
+     * passes theta to evaluate(), and the law gives dS/dtheta as
+     * stress_by_volumetric_strain, which the body couples through d theta /
+     * du over the cell or at the point. 'none': the volumetric strain of
+     * the small-strain element.
      */
-    virtual bool
-    averages_volume_change() const
+    enum class VolumeRatio
     {
-      return false;
+      none,
+      cell_mean,
+      point
+    };
+    virtual VolumeRatio
+    volume_ratio() const
+    {
+      return VolumeRatio::none;
     }
 
     /// How many history values a quadrature point keeps (0: none).
