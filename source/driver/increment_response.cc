@@ -5,7 +5,8 @@ namespace FrictionalContact
   template <int dim>
   IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
                                             MortarBasis<dim> *mortar,
-                                            const Vector     &start)
+                                            const Vector     &start,
+                                            const bool        linear)
     : model(model)
     , mortar(mortar)
     , start(start)
@@ -14,6 +15,16 @@ namespace FrictionalContact
     , u_ghosted(model.get_body().make_ghosted_vector())
     , force(force_at_start)
     , du_in_u(force_at_start)
+    , linear(linear)
+  {}
+
+
+
+  template <int dim>
+  IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
+                                            MortarBasis<dim> *mortar,
+                                            const Vector     &start)
+    : IncrementResponse(model, mortar, start, false)
   {
     du_in_u = 0;
     evaluate(du_in_u, true);
@@ -26,15 +37,7 @@ namespace FrictionalContact
   IncrementResponse<dim>::IncrementResponse(Model<dim>   &model,
                                             const Vector &start,
                                             const Vector &lifting)
-    : model(model)
-    , mortar(nullptr)
-    , start(start)
-    , force_at_start(model.get_body().make_vector())
-    , u(force_at_start)
-    , u_ghosted(model.get_body().make_ghosted_vector())
-    , force(force_at_start)
-    , du_in_u(force_at_start)
-    , linear(true)
+    : IncrementResponse(model, nullptr, start, true)
   {
     // f_int and the tangent at u^l = u_0 - lifting; the derivative along
     // the lifting by a difference quotient over a small part of it.

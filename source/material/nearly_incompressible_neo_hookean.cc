@@ -24,7 +24,7 @@ namespace FrictionalContact
      * strain) C_zz = 1: tr C counts it, and J = sqrt(det C). No history.
      */
     template <int dim>
-    class NearlyIncompressibleNeoHookean : public MaterialModel<dim>
+    class NearlyIncompressibleNeoHookean : public HyperelasticLaw<dim>
     {
     public:
       static void
@@ -50,24 +50,6 @@ namespace FrictionalContact
         if (ratio != "cell mean" && ratio != "point")
           Input::fail(own.path_of("Volume ratio"), ratio, "'cell mean' or 'point' is expected");
         cell_mean = ratio == "cell mean";
-      }
-
-      bool
-      is_linear() const override
-      {
-        return false;
-      }
-
-      bool
-      allows_finite_strain() const override
-      {
-        return true;
-      }
-
-      bool
-      needs_finite_strain() const override
-      {
-        return true;
       }
 
       typename MaterialModel<dim>::VolumeRatio
@@ -109,9 +91,7 @@ namespace FrictionalContact
         // tr C/9 C^-1 (x) C^-1 + tr C/3 I_{C^-1}) + p J (C^-1 (x) C^-1 -
         // 2 I_{C^-1}), with I_{C^-1}_ijkl = (c_ik c_jl + c_il c_jk)/2.
         double c[dim][dim];
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            c[i][j] = C_inv[i][j];
+        this->plain_copy(C_inv, c);
         const double outer = 2. * scale * trace_C / 9. + pressure * J;
         const double cross = scale * trace_C / 3. - pressure * J;
         for (unsigned int i = 0; i < dim; ++i)

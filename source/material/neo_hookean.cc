@@ -18,7 +18,7 @@ namespace FrictionalContact
      * No history.
      */
     template <int dim>
-    class NeoHookean : public MaterialModel<dim>
+    class NeoHookean : public HyperelasticLaw<dim>
     {
     public:
       static void
@@ -31,24 +31,6 @@ namespace FrictionalContact
         MaterialModel<dim>::parse_parameters(material, own);
         mu     = this->elastic().shear_modulus;
         lambda = this->elastic().bulk_modulus_3d - 2. / 3. * mu;
-      }
-
-      bool
-      is_linear() const override
-      {
-        return false;
-      }
-
-      bool
-      allows_finite_strain() const override
-      {
-        return true;
-      }
-
-      bool
-      needs_finite_strain() const override
-      {
-        return true;
       }
 
       /// @p strain: the Green-Lagrange strain E = (C - I)/2, whose
@@ -73,12 +55,8 @@ namespace FrictionalContact
         if (!with_tangent)
           return;
         const double shear = mu - lambda * log_J;
-        // A plain copy of C^-1: a SymmetricTensor's entries are found by
-        // index arithmetic at each access.
         double c[dim][dim];
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            c[i][j] = C_inv[i][j];
+        this->plain_copy(C_inv, c);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             {

@@ -62,6 +62,13 @@ namespace FrictionalContact
     }
 
   private:
+    /// The vectors of the model's body, nothing evaluated; N linear until
+    /// the first tangent evaluation if @p linear.
+    IncrementResponse(Model<dim>       &model,
+                      MortarBasis<dim> *mortar,
+                      const Vector     &start,
+                      const bool        linear);
+
     /// f_int(u) into force for u = u_0 + @p du_in_u (the tangent too if
     /// asked).
     void

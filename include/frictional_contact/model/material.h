@@ -311,6 +311,47 @@ namespace FrictionalContact
 
 
   /**
+   * A hyperelastic law of finite strain without history (the neo-Hookean
+   * laws): not linear, and for finite strain only (it means nothing at
+   * small strain).
+   */
+  template <int dim>
+  class HyperelasticLaw : public MaterialModel<dim>
+  {
+  public:
+    bool
+    is_linear() const override
+    {
+      return false;
+    }
+
+    bool
+    allows_finite_strain() const override
+    {
+      return true;
+    }
+
+    bool
+    needs_finite_strain() const override
+    {
+      return true;
+    }
+
+  protected:
+    /// The entries of @p t as a plain array, for the tangent's loops: a
+    /// SymmetricTensor finds each entry by index arithmetic at each access.
+    static void
+    plain_copy(const SymmetricTensor<2, dim> &t, double (&entries)[dim][dim])
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          entries[i][j] = t[i][j];
+    }
+  };
+
+
+
+  /**
    * The material of each body of the scene (bodies are the material ids of
    * the mesh, named by the geometry), read from the subsection "Material":
    * <Material/Model> names each body's law. Owns one law per body.
