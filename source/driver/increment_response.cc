@@ -34,10 +34,11 @@ namespace FrictionalContact
 
 
   template <int dim>
-  IncrementResponse<dim>::IncrementResponse(Model<dim>   &model,
-                                            const Vector &start,
-                                            const Vector &lifting)
-    : IncrementResponse(model, nullptr, start, true)
+  IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
+                                            MortarBasis<dim> *mortar,
+                                            const Vector     &start,
+                                            const Vector     &lifting)
+    : IncrementResponse(model, mortar, start, true)
   {
     // f_int and the tangent at u^l = u_0 - lifting; the derivative along
     // the lifting by a difference quotient over a small part of it.
@@ -57,7 +58,9 @@ namespace FrictionalContact
       }
     u_ghosted = u;
     plastic   = model.update_tangent(u_ghosted, force);
-    scale     = model.get_response().element_force_norm();
+    if (mortar != nullptr)
+      mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"));
+    scale = model.get_response().element_force_norm();
     // f_int(u^l) + (f_int(u^l + eps lifting) - f_int(u^l)) / eps.
     force_at_start = force;
     if (size > 0)
@@ -98,19 +101,19 @@ namespace FrictionalContact
                                                 Vector       &dst,
                                                 const bool    with_tangent)
   {
-    if (linear && !with_tangent)
-      {
-        // The linearised start: K_T(u^l) du.
-        model.get_body().stiffness().vmult(dst, du);
-        return;
-      }
-    linear = false;
     if (mortar != nullptr)
       mortar->displacement_to_u(du, du_in_u);
     else
       du_in_u = du;
-    evaluate(du_in_u, with_tangent);
-    force -= force_at_start;
+    if (linear && !with_tangent)
+      // The linearised start: K_T(u^l) du.
+      model.get_body().stiffness().vmult(force, du_in_u);
+    else
+      {
+        linear = false;
+        evaluate(du_in_u, with_tangent);
+        force -= force_at_start;
+      }
     if (mortar != nullptr)
       mortar->force_to_w(force, dst);
     else

@@ -255,7 +255,8 @@ namespace FrictionalContact
                               const double      t_end,
                               const double      load_factor,
                               const bool        record_history,
-                              TimerOutput      &timer)
+                              TimerOutput      &timer,
+                              const WarmStart<dim> *warm_start)
   {
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
@@ -295,8 +296,8 @@ namespace FrictionalContact
         // At finite strain the first Newton step is linearised at u^l
         // (the moved boundary alone squashes the cells beside it).
         outcome.response =
-          model.get_materials().any_finite_strain() && !mortar ?
-            std::make_unique<IncrementResponse<dim>>(model, start, lifting) :
+          model.get_materials().any_finite_strain() ?
+            std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start, lifting) :
             std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start);
         load = outcome.response->start_force();
       }
@@ -376,7 +377,7 @@ namespace FrictionalContact
                               std::vector<Tensor<1, dim>>         &r) {
               take_contact_geometry(contact, problem, start, obstacle_motion, du, r);
             };
-        solve_contact(model, state, start, outcome, record_history, timer);
+        solve_contact(model, state, start, outcome, record_history, timer, warm_start);
         outcome.problem->follow_geometry = nullptr;
         if (!result.converged)
           return outcome;
@@ -405,7 +406,8 @@ namespace FrictionalContact
                                       const TrilinosWrappers::MPI::Vector &start,
                                       IncrementOutcome<dim> &outcome,
                                       const bool             record_history,
-                                      TimerOutput           &timer)
+                                      TimerOutput           &timer,
+                                      const WarmStart<dim>  *warm_start)
   {
     const ContactOperator<dim>    &contact = model.get_contact();
     const MPI_Comm                 comm    = model.get_mpi_communicator();
@@ -452,11 +454,21 @@ namespace FrictionalContact
         return;
       }
 
-    // Warm start: the reactions of the previous increment, du = 0.
+    // Warm start: the reactions of the previous increment, du = 0; or
+    // those of another solve of this increment, and its du.
+    const std::vector<Tensor<1, dim>> &forces =
+      warm_start ? warm_start->forces : state.contact_forces;
     for (unsigned int j = 0; j < contact.n_local(); ++j)
-      r[j] = contact.friction_cone(j).project(
-        contact.to_local(j, state.contact_forces[j]));
+      r[j] = contact.friction_cone(j).project(contact.to_local(j, forces[j]));
     du = 0;
+    if (warm_start)
+      {
+        if (mortar)
+          mortar->displacement_to_w(warm_start->du, du);
+        else
+          du = warm_start->du;
+        model.get_body().get_constraints().set_zero(du);
+      }
     if (solver.method->needs_smallest_eigenvalue())
       problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K(model, timer);
     const SolveStatistics elastic = result;

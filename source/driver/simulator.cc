@@ -37,6 +37,7 @@ namespace FrictionalContact
     AdaptiveRefinement<dim>::declare_parameters(prm);
     IncrementDriver::declare_parameters(prm);
     IncrementSolver<dim>::declare_parameters(prm);
+    PairGeometry<dim>::declare_parameters(prm);
     Postprocess::Manager<dim>::declare_parameters(prm);
   }
 
@@ -68,6 +69,7 @@ namespace FrictionalContact
     , adaptivity(prm)
     , driver(prm)
     , increment_solver(prm, pcout)
+    , pair_geometry(prm)
     , postprocessors(prm, output_directory, comm)
     , checkpoint(output_directory, comm)
   {
@@ -230,27 +232,19 @@ namespace FrictionalContact
   {
     const double t           = driver.times()[l];
     const double load_factor = driver.loading().load_factor(t);
-    if (model.get_contact().has_pairs())
-      {
-        // The mortar data of the configuration the increment starts from:
-        // the state and the increment of the prescribed displacements.
-        const ElasticBody<dim>       &body  = model.get_body();
-        TrilinosWrappers::MPI::Vector start = body.make_vector();
-        body.prescribed_increment(driver.start_time(l), t, start);
-        start += state.u;
-        TrilinosWrappers::MPI::Vector start_ghosted = body.make_ghosted_vector();
-        start_ghosted = start;
-        model.get_contact().update_pairs(body, start_ghosted, driver.start_time(l), t);
-      }
     IncrementOutcome<dim> outcome =
-      increment_solver.solve(model,
-                             state,
-                             l + 1,
-                             driver.start_time(l),
-                             t,
-                             load_factor,
-                             postprocessors.needs_history(),
-                             *timer);
+      pair_geometry.solve(model, state.u, driver.start_time(l), t,
+                          [&](const WarmStart<dim> *warm_start) {
+        return increment_solver.solve(model,
+                                      state,
+                                      l + 1,
+                                      driver.start_time(l),
+                                      t,
+                                      load_factor,
+                                      postprocessors.needs_history(),
+                                      *timer,
+                                      warm_start);
+      });
     const SolveStatistics &statistics = outcome.statistics;
     if (!statistics.converged)
       {

@@ -313,9 +313,15 @@ namespace FrictionalContact
     followed_displacements.assign(any_follows ? nodes.size() : 0, Tensor<1, dim>());
     followed_gaps.assign(any_follows ? nodes.size() : 0, 0.);
     normal_gradients.assign(any_follows ? nodes.size() : 0, Tensor<2, dim>());
+    any_pair_follows = false;
     for (const MortarInterface<dim> &interface : interfaces)
-      facing_contact.insert(interface.master_bodies().begin(),
-                            interface.master_bodies().end());
+      {
+        facing_contact.insert(interface.master_bodies().begin(),
+                              interface.master_bodies().end());
+        for (const auto *side : {&interface.slave_bodies(), &interface.master_bodies()})
+          for (const types::material_id id : *side)
+            any_pair_follows |= body.get_materials().of(id).elastic().finite_strain;
+      }
     facing_contact =
       Utilities::MPI::compute_set_union(facing_contact, body.get_mpi_communicator());
     if (has_friction())
@@ -465,12 +471,18 @@ namespace FrictionalContact
   ContactOperator<dim>::update_pairs(const ElasticBody<dim> &body,
                                      const Vector           &u_ghosted,
                                      const double            t_start,
-                                     const double            t_end)
+                                     const double            t_end,
+                                     const Vector           *start)
   {
     for (MortarInterface<dim> &interface : interfaces)
-      interface.update(body, u_ghosted, t_start, t_end);
+      interface.update(body, u_ghosted, t_start, t_end, start);
+    const std::vector<double> previous_gaps = pair_gaps;
+    std::vector<Tensor<1, dim>> previous_normals;
+    for (const Node &node : nodes)
+      previous_normals.push_back(node.into_obstacle);
     pair_gaps.assign(nodes.size(), 0.);
     pair_motions.assign(nodes.size(), Tensor<1, dim>());
+    pair_change = PairChange();
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair >= 0)
         {
@@ -491,7 +503,16 @@ namespace FrictionalContact
           pair_motions[j] = data->master_motion;
           if (!tangents.empty())
             tangents[j] = tangents_to<dim>(normal);
+          if (previous_gaps.size() == nodes.size())
+            {
+              pair_change.normal =
+                std::max(pair_change.normal, (normal - previous_normals[j]).norm());
+              pair_change.gap =
+                std::max(pair_change.gap, std::abs(pair_gaps[j] - previous_gaps[j]));
+            }
         }
+    pair_change.normal = Utilities::MPI::max(pair_change.normal, mpi_communicator);
+    pair_change.gap    = Utilities::MPI::max(pair_change.gap, mpi_communicator);
   }
 
 

@@ -268,7 +268,8 @@ namespace FrictionalContact
   MortarInterface<dim>::update(const ElasticBody<dim> &body,
                                const Vector           &u_ghosted,
                                const double            t_start,
-                               const double            t_end)
+                               const double            t_end,
+                               const Vector           *gaps_at)
   {
     const MPI_Comm  comm     = body.get_mpi_communicator();
     const IndexSet &owned    = body.locally_owned_dofs();
@@ -286,6 +287,11 @@ namespace FrictionalContact
       }
     else
       masters = gather_master_faces(u_ghosted, comm);
+    // The gaps are measured at u_ghosted, or with this geometry at gaps_at.
+    const Vector &gap_displacement = gaps_at != nullptr ? *gaps_at : u_ghosted;
+    const auto    masters_at_gaps  = tool == nullptr && gaps_at != nullptr ?
+                                       gather_master_faces(*gaps_at, comm) :
+                                       masters;
 
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
     std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> master_vertex;
@@ -296,7 +302,8 @@ namespace FrictionalContact
                            m);
         if (face != nullptr)
           for (unsigned int b = 0; b < n_face_vertices; ++b)
-            master_vertex[face->dofs[b][0]] = {face->dofs[b], y[b]};
+            master_vertex[face->dofs[b][0]] = {face->dofs[b],
+                                               masters_at_gaps[m].first[b]};
       }
     const auto tree = pack_rtree(boxes);
 
@@ -379,11 +386,11 @@ namespace FrictionalContact
       {
         for (Vector *v : {&rigid.weight, &rigid.point, &rigid.motion})
           v->compress(VectorOperation::add);
-        finish_rigid_rows(normal_sum, lumped_sum, rigid, u_ghosted);
+        finish_rigid_rows(normal_sum, lumped_sum, rigid, gap_displacement);
       }
     else
-      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, u_ghosted,
-                  relevant, comm);
+      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex,
+                  gap_displacement, relevant, comm);
   }
 
 

@@ -86,6 +86,11 @@ namespace FrictionalContact
       else
         out << ": elastic solve, " << solve.linear_iterations
             << " " << last_linear_solve << std::endl;
+      if (result.outcome.geometry_passes > 0)
+        out << "    contact pairs' geometry: " << result.outcome.geometry_passes
+            << " solve" << (result.outcome.geometry_passes > 1 ? "s" : "")
+            << ", normals settled to "
+            << Input::scientific(result.outcome.geometry_change) << std::endl;
       // The candidates' penetration is bounded by the residual; a vertex
       // that is not a candidate must not go deeper.
       if (contact && summary.deepest_penetration > allowed_penetration(result))

@@ -643,7 +643,8 @@ namespace FrictionalContact
     // positive scale serves the merit's force balance.
     const double mean_c =
       contact.n_candidates() > 0 ? mean_over_candidates(contact, c, comm) : 1.;
-    problem.internal_force(du, work.K_du);
+    // From a warm start (du != 0), a nonlinear law's tangent is taken there.
+    problem.internal_force(du, work.K_du, du.linfty_norm() > 0);
     contact.apply(r, work.T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions);

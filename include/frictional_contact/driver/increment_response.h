@@ -26,7 +26,7 @@ namespace FrictionalContact
     IncrementResponse(Model<dim> &model, MortarBasis<dim> *mortar, const Vector &start);
 
     /**
-     * A linearised start (finite strain, without contact pairs): the
+     * A linearised start (finite strain): the
      * increment starts from u_0 = u^l + @p lifting, the prescribed
      * increment, which alone squashes the cells beside the moved boundary
      * far from equilibrium. Instead of f_int(u_0), the reference force is
@@ -37,7 +37,10 @@ namespace FrictionalContact
      * prescribed increment as its constraint. The force balance is that of
      * f_int(u_0 + du) throughout.
      */
-    IncrementResponse(Model<dim> &model, const Vector &start, const Vector &lifting);
+    IncrementResponse(Model<dim>       &model,
+                      MortarBasis<dim> *mortar,
+                      const Vector     &start,
+                      const Vector     &lifting);
 
     /// The reference force f_int(u_0) (or its linearisation), in u.
     const Vector &

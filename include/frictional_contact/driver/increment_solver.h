@@ -50,6 +50,22 @@ namespace FrictionalContact
     TrilinosWrappers::MPI::Vector du;
     ContactResults<dim>           results;
     SolveStatistics               statistics;
+    /// Solves of the increment for its contact pairs' geometry to settle
+    /// (PairGeometry; 0 where the geometry is taken once), and the largest
+    /// change of a slave normal the last one left.
+    unsigned int geometry_passes = 0;
+    double       geometry_change = 0;
+  };
+
+  /// Where a solve of an increment may start instead of from du = 0 and
+  /// the last increment's contact forces: the displacement increment
+  /// (without the prescribed one, in u) and the Cartesian contact forces
+  /// of a solve of the same increment.
+  template <int dim>
+  struct WarmStart
+  {
+    TrilinosWrappers::MPI::Vector du;
+    std::vector<Tensor<1, dim>>   forces;
   };
 
   /**
@@ -92,19 +108,21 @@ namespace FrictionalContact
     /**
      * Solves increment number @p increment (counted from 1, for messages)
      * from @p t_start to @p t_end from @p state, the
-     * obstacle already moved to its position at @p t_end. Throws a
-     * SolverError if the elastic solve fails; a contact solve that does not
-     * converge is reported in the outcome's statistics.
+     * obstacle already moved to its position at @p t_end, the contact
+     * solve from @p warm_start if given. Throws a SolverError if the
+     * elastic solve fails; a contact solve that does not converge is
+     * reported in the outcome's statistics.
      */
     IncrementOutcome<dim>
-    solve(Model<dim>        &model,
-          const State<dim>  &state,
-          const unsigned int increment,
-          const double      t_start,
-          const double      t_end,
-          const double      load_factor,
-          const bool        record_history,
-          TimerOutput      &timer);
+    solve(Model<dim>             &model,
+          const State<dim>       &state,
+          const unsigned int      increment,
+          const double            t_start,
+          const double            t_end,
+          const double            load_factor,
+          const bool              record_history,
+          TimerOutput            &timer,
+          const WarmStart<dim>   *warm_start = nullptr);
 
     /// What the contact solver calls its iterations.
     std::string
@@ -160,15 +178,16 @@ namespace FrictionalContact
                                  ContactHeldBodies &held) const;
 
     /// Solves the contact problem of @p outcome from the elastic solution
-    /// in outcome.du_solved (if any); @p start is u^l with the prescribed
-    /// increment.
+    /// in outcome.du_solved (if any), or from @p warm_start; @p start is
+    /// u^l with the prescribed increment.
     void
     solve_contact(const Model<dim>                    &model,
                   const State<dim>                    &state,
                   const TrilinosWrappers::MPI::Vector &start,
-                  IncrementOutcome<dim> &outcome,
-                  const bool             record_history,
-                  TimerOutput           &timer);
+                  IncrementOutcome<dim>               &outcome,
+                  const bool                           record_history,
+                  TimerOutput                         &timer,
+                  const WarmStart<dim>                *warm_start);
 
     /**
      * Takes the obstacle's gaps and frames of @p contact at start + @p du

@@ -8,6 +8,7 @@
 #include <frictional_contact/driver/checkpoint.h>
 #include <frictional_contact/driver/increment_driver.h>
 #include <frictional_contact/driver/increment_solver.h>
+#include <frictional_contact/driver/pair_geometry.h>
 #include <frictional_contact/model/adaptive_refinement.h>
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/postprocess/manager.h>
@@ -116,6 +117,7 @@ namespace FrictionalContact
     AdaptiveRefinement<dim>      adaptivity;
     IncrementDriver              driver;
     IncrementSolver<dim>         increment_solver;
+    PairGeometry<dim>            pair_geometry;
     Postprocess::Manager<dim>    postprocessors;
     Checkpoint<dim>              checkpoint;
     std::unique_ptr<TimerOutput> timer;

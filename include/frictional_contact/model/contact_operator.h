@@ -68,13 +68,40 @@ namespace FrictionalContact
      * (@p u_ghosted with ghost entries): the slave nodes' frames, areas and
      * gaps, and the rows P_jl; a rigid tool stands where it is at @p t_end.
      * Call at the start of every increment (from @p t_start to @p t_end),
-     * with the displacement the increment starts from. Collective.
+     * with the displacement the increment starts from. With @p start
+     * (ghosted), the data is that of X + u, the gaps those at X + start
+     * measured with it: the increment from start solved again with the
+     * geometry of where it ended. Collective.
      */
     void
     update_pairs(const ElasticBody<dim> &body,
                  const Vector           &u_ghosted,
                  const double            t_start,
-                 const double            t_end);
+                 const double            t_end,
+                 const Vector           *start = nullptr);
+
+    /// How far the last update_pairs() moved the slave nodes' data from
+    /// the one before, on all ranks: the largest change of a unit normal
+    /// and of a gap.
+    struct PairChange
+    {
+      double normal = 0;
+      double gap    = 0;
+    };
+
+    const PairChange &
+    last_pair_change() const
+    {
+      return pair_change;
+    }
+
+    /// Whether a body at finite strain is on either side of a pair (the
+    /// same on all ranks): its pairs' geometry moves within an increment.
+    bool
+    pairs_follow_configuration() const
+    {
+      return any_pair_follows;
+    }
 
     /**
      * The prescribed tangential motion over the increment of what node j
@@ -508,6 +535,8 @@ namespace FrictionalContact
     /// The gradient of the obstacle's outward normal there.
     std::vector<Tensor<2, dim>>                  normal_gradients;
     bool                                         any_follows = false;
+    bool                                         any_pair_follows = false;
+    PairChange                                   pair_change;
     std::unique_ptr<TimeFunction>                rigid_displacement;
     Tensor<1, dim>                               obstacle_shift;
     types::global_dof_index                      n_global = 0;

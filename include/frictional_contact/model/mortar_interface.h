@@ -23,8 +23,9 @@ namespace FrictionalContact
    * slave vertex in the current configuration: the averaged outward normal,
    * the weight D_jj, the row P_jl = M_jl / D_jj that maps master
    * displacements to the slave node, and the nodal gap
-   * sum_l P_jl n_j . (y_l - x_j). Small sliding: the data is frozen within
-   * an increment. Master faces may live on any rank: their current
+   * sum_l P_jl n_j . (y_l - x_j). The data is frozen within a solve of an
+   * increment (at finite strain the increment is solved again with the
+   * data of where it ended, PairGeometry). Master faces may live on any rank: their current
    * vertices are gathered on every rank at each update. The master may
    * also be a rigid tool, whose faces every rank knows and whose
    * displacement is given: then the rows P_jl have no unknowns, and each
@@ -51,13 +52,17 @@ namespace FrictionalContact
      * Computes the mortar data of the locally owned slave vertices in the
      * configuration X + u, @p u_ghosted with ghost entries, for the
      * increment from @p t_start to @p t_end (a rigid tool stands where it
-     * is at @p t_end). Collective.
+     * is at @p t_end). With @p gaps_at (ghosted too), the gaps are those
+     * of the slave and master vertices displaced by it, measured with the
+     * normals and rows of X + u: the gaps at the start of an increment
+     * whose geometry is taken where it ends. Collective.
      */
     void
     update(const ElasticBody<dim> &body,
            const Vector           &u_ghosted,
            const double            t_start,
-           const double            t_end);
+           const double            t_end,
+           const Vector           *gaps_at = nullptr);
 
     /// Whether the master is a rigid tool.
     bool
@@ -196,7 +201,8 @@ namespace FrictionalContact
     };
 
     /// Resets the data of slave vertex @p dof to its normal and full
-    /// weight (from the sums over the faces); returns its current position.
+    /// weight (from the sums over the faces); returns its position for the
+    /// displacement @p u_ghosted.
     Point<dim>
     start_node(const types::global_dof_index dof,
                const Vector                 &normal_sum,

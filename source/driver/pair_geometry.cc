@@ -1,0 +1,166 @@
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/pair_geometry.h>
+
+namespace FrictionalContact
+{
+  template <int dim>
+  void
+  PairGeometry<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.enter_subsection("Pair geometry");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-8",
+      Patterns::Double(0.),
+      "For contact pairs with a body at finite strain, which move within "
+      "an increment: the increment is solved again with the mortar "
+      "geometry (normals, segments, gaps) of where it ended until no "
+      "slave node's unit normal turns by more than this and no gap moves "
+      "by more than this times the increment's largest displacement.");
+    prm.declare_entry("Maximum passes",
+                      "10",
+                      Patterns::Integer(1),
+                      "Solves of one increment for its pairs' geometry to "
+                      "settle (see Tolerance); an increment that needs more "
+                      "fails (and is cut with <Loading/On failure> = cut "
+                      "increment).");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  PairGeometry<dim>::PairGeometry(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.enter_subsection("Pair geometry");
+    tolerance  = prm.get_double("Tolerance");
+    max_passes = prm.get_integer("Maximum passes");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    if (!(tolerance > 0))
+      Input::fail("Contact/Pair geometry/Tolerance",
+                  Input::to_text(tolerance),
+                  "a positive number is expected (a change of exactly 0 is "
+                  "never reached in floating point)");
+  }
+
+
+
+  namespace
+  {
+    /// Adds the work of another solve of the same increment to @p total.
+    void
+    add_work(SolveStatistics &total, const SolveStatistics &more)
+    {
+      total.iterations += more.iterations;
+      total.linear_iterations += more.linear_iterations;
+      total.amg_setups += more.amg_setups;
+      total.amg_updates += more.amg_updates;
+      total.seconds += more.seconds;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  IncrementOutcome<dim>
+  PairGeometry<dim>::solve(
+    Model<dim>                                   &model,
+    const TrilinosWrappers::MPI::Vector          &u,
+    const double                                  t_start,
+    const double                                  t_end,
+    const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)> &solve_once) const
+  {
+    ContactOperator<dim> &contact = model.get_contact();
+    if (!contact.has_pairs())
+      return solve_once(nullptr);
+
+    // The configuration the increment starts from: the state and the
+    // increment of the prescribed displacements.
+    const ElasticBody<dim>       &body  = model.get_body();
+    TrilinosWrappers::MPI::Vector start = body.make_vector();
+    body.prescribed_increment(t_start, t_end, start);
+    start += u;
+    TrilinosWrappers::MPI::Vector start_ghosted = body.make_ghosted_vector();
+    start_ghosted = start;
+    contact.update_pairs(body, start_ghosted, t_start, t_end);
+    IncrementOutcome<dim> outcome = solve_once(nullptr);
+    if (!contact.pairs_follow_configuration())
+      return outcome;
+
+    // The configuration x whose geometry the last solve had, and where
+    // that solve ended, s: the fixed point x = s, relaxed by Aitken's
+    // factor (Irons and Tuck) from the last two passes.
+    SolveStatistics               work = outcome.statistics;
+    TrilinosWrappers::MPI::Vector taken = start, reached = start;
+    TrilinosWrappers::MPI::Vector step = body.make_vector(), last_step;
+    TrilinosWrappers::MPI::Vector ghosted = body.make_ghosted_vector();
+    double                        factor  = 1;
+    // Each solve starts from the last one's solution (its forces in
+    // Cartesian components, before the frames change).
+    WarmStart<dim> warm_start{body.make_vector(), {}};
+    for (unsigned int pass = 1; outcome.statistics.converged; ++pass)
+      {
+        warm_start.forces.resize(contact.n_local());
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          warm_start.forces[j] = contact.to_cartesian(j, outcome.reactions[j]);
+        warm_start.du = outcome.du;
+        warm_start.du -= start;
+        warm_start.du += u;
+        reached = u;
+        reached += outcome.du;
+        ghosted = reached;
+        contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
+        const auto &change = contact.last_pair_change();
+        outcome.geometry_passes = pass;
+        outcome.geometry_change = change.normal;
+        const bool settled = change.normal <= tolerance &&
+                             change.gap <= tolerance * outcome.du.linfty_norm();
+        if (settled || pass == max_passes)
+          {
+            const SolveStatistics last = outcome.statistics;
+            outcome.statistics           = work;
+            outcome.statistics.converged = settled;
+            outcome.statistics.residuals = last.residuals;
+            outcome.statistics.history   = last.history;
+            if (!settled)
+              outcome.statistics.failure =
+                "the contact pairs' geometry did not settle in " +
+                std::to_string(max_passes) +
+                " solves (<Contact/Pair geometry/Maximum passes>): the last "
+                "solve still turned a normal by " +
+                Input::scientific(change.normal) + " and moved a gap by " +
+                Input::scientific(change.gap) +
+                "; try smaller increments or <Loading/On failure> = cut "
+                "increment";
+            return outcome;
+          }
+        step = reached;
+        step -= taken;
+        if (pass > 1)
+          {
+            TrilinosWrappers::MPI::Vector difference = step;
+            difference -= last_step;
+            const double square = difference * difference;
+            if (square > 0)
+              factor *= -(last_step * difference) / square;
+          }
+        last_step = step;
+        taken.add(factor, step);
+        if (factor != 1)
+          {
+            ghosted = taken;
+            contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
+          }
+        outcome = solve_once(&warm_start);
+        add_work(work, outcome.statistics);
+      }
+    return outcome;
+  }
+
+  template class PairGeometry<2>;
+  template class PairGeometry<3>;
+} // namespace FrictionalContact
