@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Checks the objectivity run (tests/pair_rotation.prm: a pressed pair at
-finite strain turned by 90 degrees about (1, 0.5) between t = 1 and t = 2)
-from its contact tables: at t = 2 every slave node stands where the
-rotation takes it from t = 1 (its deformed position, to TOLERANCE times
-the block's height of 0.5), and its contact pressure and tangential
-traction are those of t = 1 to TOLERANCE of the largest pressure.
+"""Checks an objectivity run (tests/pair_rotation.prm, pair_rotation_3d.prm:
+a pressed pair at finite strain turned by 90 degrees between t = 1 and
+t = 2, in 2D about (1, 0.5), in 3D about the line x = 1, z = 0.5) from its
+contact tables: at t = 2 every slave node stands where the rotation takes
+it from t = 1 (its deformed position, to TOLERANCE times the block's
+height of 0.5), and its contact pressure and tangential traction are
+those of t = 1 to TOLERANCE of the largest pressure (in 3D the traction's
+magnitude: the tangents of a frame are not unique).
 
 usage: check_pair_rotation.py <output folder> --tolerance TOLERANCE
 """
@@ -33,18 +35,27 @@ def main():
     largest = max(float(node["pressure"]) for node in before)
     if not largest > 0:
         sys.exit("*** no pressure at t = 1: the block does not press on the base")
+    # The plane of the rotation: (x, y) in 2D, (x, z) in 3D.
+    axes = ("x", "z") if "z" in before[0] else ("x", "y")
     moved = pressure = traction = 0.0
     for a, b in zip(before, after):
-        x, y = float(a["x"]) + float(a["ux"]), float(a["y"]) + float(a["uy"])
-        turned = (CENTRE[0] - (y - CENTRE[1]), CENTRE[1] + (x - CENTRE[0]))
-        moved = max(moved, math.hypot(float(b["x"]) + float(b["ux"]) - turned[0],
-                                      float(b["y"]) + float(b["uy"]) - turned[1]))
+        position = [float(a[c]) + float(a["u" + c]) for c in axes]
+        turned = (CENTRE[0] - (position[1] - CENTRE[1]),
+                  CENTRE[1] + (position[0] - CENTRE[0]))
+        reached = [float(b[c]) + float(b["u" + c]) for c in axes]
+        off = math.hypot(reached[0] - turned[0], reached[1] - turned[1])
+        if "y" not in axes:
+            off = math.hypot(off, float(b["y"]) + float(b["uy"])
+                             - float(a["y"]) - float(a["uy"]))
+        moved = max(moved, off)
         pressure = max(pressure, abs(float(b["pressure"]) - float(a["pressure"])))
         rt = [key for key in a if key.startswith("rt")]
-        for key in rt:
-            per_area_a = float(a[key]) / float(a["area"])
-            per_area_b = float(b[key]) / float(b["area"])
-            traction = max(traction, abs(per_area_b - per_area_a))
+        if len(rt) == 1:
+            change = float(b[rt[0]]) / float(b["area"]) - float(a[rt[0]]) / float(a["area"])
+        else:
+            change = (math.hypot(*(float(b[key]) for key in rt)) / float(b["area"])
+                      - math.hypot(*(float(a[key]) for key in rt)) / float(a["area"]))
+        traction = max(traction, abs(change))
     print(f"largest pressure {largest:.6g}; after the rotation: nodes off the "
           f"rotated positions by {moved:.3g}, pressures changed by "
           f"{pressure / largest:.3g}, tangential tractions by "

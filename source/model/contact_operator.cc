@@ -38,6 +38,29 @@ namespace FrictionalContact
         }
       return t;
     }
+
+    /// @p v turned by the rotation that takes the unit vector @p from to
+    /// @p to about their common normal (the smallest such rotation).
+    template <int dim>
+    Tensor<1, dim>
+    turned(const Tensor<1, dim> &from, const Tensor<1, dim> &to, const Tensor<1, dim> &v)
+    {
+      const double cosine = from * to;
+      if constexpr (dim == 2)
+        {
+          const double sine = from[0] * to[1] - from[1] * to[0];
+          return Tensor<1, dim>({cosine * v[0] - sine * v[1], sine * v[0] + cosine * v[1]});
+        }
+      else
+        {
+          const Tensor<1, dim> axis = cross_product_3d(from, to);
+          const double         sine = axis.norm();
+          if (sine == 0)
+            return v;
+          const Tensor<1, dim> k = axis / sine;
+          return cosine * v + sine * cross_product_3d(k, v) + (1 - cosine) * (k * v) * k;
+        }
+    }
   } // namespace
 
 
@@ -482,6 +505,9 @@ namespace FrictionalContact
       previous_normals.push_back(node.into_obstacle);
     pair_gaps.assign(nodes.size(), 0.);
     pair_motions.assign(nodes.size(), Tensor<1, dim>());
+    frame_slips.assign(nodes.size(), Tensor<1, dim>());
+    if (start == nullptr)
+      start_normals.assign(nodes.size(), Tensor<1, dim>());
     pair_change = PairChange();
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (nodes[j].pair >= 0)
@@ -501,6 +527,17 @@ namespace FrictionalContact
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
           pair_gaps[j]  = data->gap;
           pair_motions[j] = data->master_motion;
+          if (start == nullptr)
+            start_normals[j] = normal;
+          else
+            {
+              // The node's offset from its mortar point turned as the
+              // frame turned, projected on the tangent plane.
+              const Tensor<1, dim> offset = -data->offset;
+              const Tensor<1, dim> carried =
+                offset - turned(start_normals[j], normal, offset);
+              frame_slips[j] = carried - (carried * normal) * normal;
+            }
           if (!tangents.empty())
             tangents[j] = tangents_to<dim>(normal);
           if (previous_gaps.size() == nodes.size())

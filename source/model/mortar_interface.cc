@@ -475,6 +475,7 @@ namespace FrictionalContact
             const double p = m / node.weight;
             node.masters.emplace_back(master_dofs, p);
             node.gap += p * (node.normal * (master_position - position));
+            node.offset += p * (master_position - position);
           }
       }
   }
@@ -501,7 +502,8 @@ namespace FrictionalContact
             mean_point[c]         = rigid.point[dofs[c]] / node.weight;
             node.master_motion[c] = rigid.motion[dofs[c]] / node.weight;
           }
-        node.gap = node.normal * (mean_point - position);
+        node.gap    = node.normal * (mean_point - position);
+        node.offset = mean_point - node.master_motion - position;
       }
   }
 

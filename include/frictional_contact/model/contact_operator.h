@@ -109,12 +109,16 @@ namespace FrictionalContact
      * part): for a candidate facing the obstacle, the obstacle's
      * @p obstacle_motion; for a slave node of a rigid tool, the tool's
      * motion there; 0 for a deformable master (its motion is unknown).
+     * Where a pair's frame turned within the increment (update_pairs()
+     * with a start), less the part of the slave node's offset from its
+     * mortar point that the turn carries along: the slip is measured
+     * objectively, zero under a rigid rotation of a stuck pair.
      */
     Tensor<1, dim>
     prescribed_slip(const unsigned int j, const Tensor<1, dim> &obstacle_motion) const
     {
       Tensor<1, dim> slip =
-        to_local(j, nodes[j].pair < 0 ? obstacle_motion : pair_motions[j]);
+        to_local(j, nodes[j].pair < 0 ? obstacle_motion : pair_motions[j] - frame_slips[j]);
       slip[0] = 0;
       return slip;
     }
@@ -523,6 +527,12 @@ namespace FrictionalContact
     /// The rigid tool's motion over the increment at each of its slave
     /// nodes, Cartesian (zero elsewhere).
     std::vector<Tensor<1, dim>>                  pair_motions;
+    /// Each slave node's normal where its increment started (the last
+    /// update_pairs() without a start), and the tangential motion that
+    /// the turn from it to the current normal gives the node's offset
+    /// from its mortar point (zero while the frame has not turned).
+    std::vector<Tensor<1, dim>>                  start_normals;
+    std::vector<Tensor<1, dim>>                  frame_slips;
     std::unique_ptr<RigidTool<dim>>              tool;
     std::unique_ptr<Obstacle::Interface<dim>>    obstacle;
     std::vector<Node>                            nodes;

@@ -83,6 +83,10 @@ namespace FrictionalContact
       double full_weight = 0;
       /// The nodal gap to the master (length), if the node has a master.
       double gap = 0;
+      /// The master's mortar point minus the node where the gaps are
+      /// measured, sum_l P_jl (y_l - x_j) (a rigid master where it stood
+      /// at t_start); its normal part is the gap of a deformable master.
+      Tensor<1, dim> offset;
       /// The master vertices and P_jl (none for a rigid tool).
       std::vector<std::pair<NodeDofs, double>> masters;
       /// The master's displacement over the increment at the node,
