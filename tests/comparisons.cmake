@@ -601,3 +601,12 @@ foreach(_case pair_rotation_mu_0:pair_rotation:0:1e-7
             ${_directory}/output-${_scene} --tolerance ${_tolerance})
   set_tests_properties(${_name}.objective PROPERTIES FIXTURES_REQUIRED ${_name})
 endforeach()
+
+# Increments grown past the loading history's times on the O-ring: fewer
+# increments, the same end state (grown_increments.sh).
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/grown_increments)
+add_test(NAME grown_increments
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/grown_increments.sh $<TARGET_FILE:contact>
+          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/grown_increments)
+set_tests_properties(grown_increments PROPERTIES ENVIRONMENT "${_environment}")

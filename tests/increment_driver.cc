@@ -51,7 +51,7 @@ namespace
     for (std::string line; std::getline(lines, line);)
       {
         cut_lines += line.rfind("Cut in half", 0) == 0;
-        grown_lines += line.rfind("Grown back", 0) == 0;
+        grown_lines += line.rfind("Grown", 0) == 0;
       }
     std::cout << "; " << solved.size() << " solved, " << cut_lines
               << " cut lines";
@@ -86,6 +86,12 @@ main(int argc, char *argv[])
         "set Increment times = 0.5, 1\nset On failure = cut increment\n"
         "set Easy increment iterations = 2",
         0.3);
+  // Grown past the history's times: each easy increment merges the next
+  // two (0.25 + 0.25), never past the last time.
+  check("growth past the history's times",
+        "set Number of increments = 8\nset Easy increment iterations = 2\n"
+        "set Grow past increment times = true",
+        1);
   check("hard increments stay cut",
         "set Number of increments = 1\nset On failure = cut increment\n"
         "set Easy increment iterations = 1",

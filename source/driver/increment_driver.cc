@@ -28,8 +28,18 @@ namespace FrictionalContact
                       "this many iterations, the next two increments that "
                       "cuts made (On failure = cut increment) are merged "
                       "into one: the increment doubles back towards the "
-                      "loading history's own, never past its times. 0: "
-                      "cut increments stay cut.");
+                      "loading history's own, never past its times (unless "
+                      "Grow past increment times). 0: cut increments stay "
+                      "cut.");
+    prm.declare_entry("Grow past increment times",
+                      "false",
+                      Patterns::Bool(),
+                      "true: after an easy increment (Easy increment "
+                      "iterations) the next two increments are merged even "
+                      "where the loading history's own times part them, so "
+                      "an increment grows to twice the planned one: fewer "
+                      "solves where the problem is easy, and results written "
+                      "at fewer times. The last time is always kept.");
     prm.leave_subsection();
   }
 
@@ -42,6 +52,7 @@ namespace FrictionalContact
     cut_on_failure = prm.get("On failure") == "cut increment";
     maximum_cuts   = prm.get_integer("Maximum cuts");
     easy_iterations = prm.get_integer("Easy increment iterations");
+    grow_past_times = prm.get_bool("Grow past increment times");
     prm.leave_subsection();
     planned_times = history->increment_times();
     end_times     = planned_times;
@@ -60,8 +71,14 @@ namespace FrictionalContact
         {
           const unsigned int iterations = increment(l);
           cuts                          = 0;
+          // The time a merge would take away, if one of the history's.
+          const std::string skipped =
+            l + 1 < end_times.size() && planned(end_times[l + 1]) ?
+              "Grown past t = " + Input::to_text(end_times[l + 1]) :
+              "Grown back";
           if (easy_iterations > 0 && iterations <= easy_iterations && grow_after(l))
-            out << "Grown back (increment " << l + 1 << " took " << iterations
+            out << skipped
+                << " (increment " << l + 1 << " took " << iterations
                 << " iterations), now " << end_times.size() << " increments"
                 << std::endl;
         }
@@ -87,10 +104,18 @@ namespace FrictionalContact
   {
     if (l + 2 >= end_times.size())
       return false;
-    if (std::find(planned_times.begin(), planned_times.end(), end_times[l + 1]) !=
-        planned_times.end())
+    if (!grow_past_times && planned(end_times[l + 1]))
       return false;
     end_times.erase(end_times.begin() + l + 1);
     return true;
+  }
+
+
+
+  bool
+  IncrementDriver::planned(const double t) const
+  {
+    return std::find(planned_times.begin(), planned_times.end(), t) !=
+           planned_times.end();
   }
 } // namespace FrictionalContact

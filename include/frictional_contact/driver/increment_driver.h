@@ -18,7 +18,7 @@ namespace FrictionalContact
    * t_1 < ... < t_n of the increments and the policy for an increment that
    * fails (abort the run, or retry it as two halves, up to a number of cuts
    * in a row) and for one that converged easily (the next two increments
-   * that cuts made merged back into one). Owns the subsection "Loading".
+   * that cuts made, or any two if asked, merged into one). Owns the subsection "Loading".
    * It knows nothing of meshes or solvers: an increment is a function of
    * its number, so that the policy can be tested alone.
    */
@@ -41,7 +41,8 @@ namespace FrictionalContact
      * (one line on @p out says why), else the error goes on to the caller,
      * as does any other exception. After an increment that took at most
      * <Easy increment iterations>, the next two increments that cuts made
-     * are merged into one (one line on @p out): the increment grows back.
+     * (or any two, with <Grow past increment times>) are merged into one
+     * (one line on @p out): the increment grows.
      */
     void
     run(const unsigned int first, const Increment &increment, std::ostream &out);
@@ -76,10 +77,15 @@ namespace FrictionalContact
 
   private:
     /// Merges increments @p l + 1 and @p l + 2 if a cut made the end time of
-    /// the first (it is not one of the loading history's); returns whether
-    /// it did.
+    /// the first (it is not one of the loading history's), or always with
+    /// <Grow past increment times>; never past the last time. Returns
+    /// whether it did.
     bool
     grow_after(const unsigned int l);
+
+    /// Whether @p t is one of the loading history's own end times.
+    bool
+    planned(const double t) const;
 
     std::unique_ptr<LoadingHistory> history;
     /// The loading history's own end times, and those with the cuts.
@@ -89,5 +95,7 @@ namespace FrictionalContact
     unsigned int        maximum_cuts;
     /// See <Loading/Easy increment iterations>; 0: never.
     unsigned int        easy_iterations;
+    /// See <Loading/Grow past increment times>.
+    bool                grow_past_times;
   };
 } // namespace FrictionalContact
