@@ -353,6 +353,23 @@ def ironing(root):
                      "increments", "run"], body)
 
 
+def ironing_3d(root):
+    """bench/ironing_3d.py: the 3D ironing with a tool from a surface mesh
+    against the 2D scene on the same cells."""
+    body = []
+    for r in rows(root, "ironing-3d.csv"):
+        three = r["dimension"] == "3"
+        body.append([r["cells_along"], "3D, tool (mortar)" if three else "2D, cylinder (nodes)",
+                     r["ranks"], thousands(r["d"]), r["increments"], r["newton_iterations"],
+                     r["geometry_solves"],
+                     f"{float(r['largest_drag_difference']):.2%}, "
+                     f"{float(r['largest_press_difference']):.2%}" if three else "",
+                     seconds(r["wall_s"])])
+    return markdown(["cells along", "die", "ranks", "d", "increments", "Newton steps",
+                     "geometry solves", "largest difference from 2D (drag, press)", "run"],
+                    body)
+
+
 def o_ring_locking(root):
     """bench/o_ring_locking.py: per Poisson's ratio and law, the force at
     the end on each level (or what stopped the run), with its cuts and
@@ -382,6 +399,7 @@ TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,
+    "ironing-3d": ironing_3d,
     "linear-speed": linear_speed,
     "step42": step42,
     "same-solutions": same_solutions,

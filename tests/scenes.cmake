@@ -54,3 +54,7 @@ foreach(_scene ${_scenes})
     endif()
   endforeach()
 endforeach()
+
+# The 2D ironing scene's statistics on 2 ranks are what the 3D ironing test
+# compares with (ironing_3d.against_2d, comparisons.cmake).
+set_tests_properties(scenes/ironing_2d.mpirun=2 PROPERTIES FIXTURES_SETUP ironing_2d_scene)

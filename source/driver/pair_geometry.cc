@@ -11,15 +11,15 @@ namespace FrictionalContact
     prm.enter_subsection("Pair geometry");
     prm.declare_entry(
       "Tolerance",
-      "1e-8",
+      "1e-6",
       Patterns::Double(0.),
       "For contact pairs with a body at finite strain, which move within "
       "an increment: the increment is solved again with the mortar "
       "geometry (normals, segments, gaps) of where it ended until no "
       "slave node's unit normal turns by more than this and no gap moves "
-      "by more than this times the increment's largest displacement.");
+      "by more than this times the largest displacement where it ended.");
     prm.declare_entry("Maximum passes",
-                      "10",
+                      "20",
                       Patterns::Integer(1),
                       "Solves of one increment for its pairs' geometry to "
                       "settle (see Tolerance); an increment that needs more "
@@ -117,8 +117,10 @@ namespace FrictionalContact
         const auto &change = contact.last_pair_change();
         outcome.geometry_passes = pass;
         outcome.geometry_change = change.normal;
-        const bool settled = change.normal <= tolerance &&
-                             change.gap <= tolerance * outcome.du.linfty_norm();
+        // Gaps are measured against the displacement so far: an
+        // increment cut small does not ask for a smaller change.
+        const bool settled =
+          change.normal <= tolerance && change.gap <= tolerance * reached.linfty_norm();
         if (settled || pass == max_passes)
           {
             const SolveStatistics last = outcome.statistics;

@@ -167,12 +167,15 @@ namespace FrictionalContact
   {
     n_finished      = first_increment;
     last_checkpoint = first_increment;
+    // The driver's lines (cuts, growth) once, from the first rank: a
+    // stream without a buffer writes nothing.
+    std::ostream nowhere(nullptr);
     try
       {
         driver.run(
           first_increment,
           [&](const unsigned int l) { return solve_increment(l); },
-          pcout.get_stream());
+          pcout.is_active() ? pcout.get_stream() : nowhere);
       }
     catch (const StopRequested &stop)
       {

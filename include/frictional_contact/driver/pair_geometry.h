@@ -44,7 +44,7 @@ namespace FrictionalContact
 
   private:
     /// The largest change of a unit normal, and of a gap over the
-    /// increment's largest displacement, that counts as settled.
+    /// largest displacement where the increment ended, that counts as settled.
     double       tolerance;
     unsigned int max_passes;
   };
