@@ -92,14 +92,22 @@ contact_compare_tables(frictionless_two_increments.path_independent
   ${CMAKE_CURRENT_BINARY_DIR}/frictionless_two_increments/output-frictionless_two_increments/contact-00002.csv
   --keys x --columns ux,uy,rn --tolerance 1e-8 --states state)
 
+# A test run by its script tests/<script>.sh, which takes the program, the
+# source folder and Python, in a folder of its own; <processors> are the
+# ranks it starts.
+function(add_script_test name script processors)
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${script})
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/${script}.sh $<TARGET_FILE:contact>
+            ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${script})
+  set_tests_properties(${name} PROPERTIES ENVIRONMENT "${_environment}"
+    PROCESSORS ${processors})
+endfunction()
+
 # Kill a run after a checkpoint, resume it on 2 ranks, compare with a run
 # that was not interrupted.
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
-add_test(NAME restart
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart)
-set_tests_properties(restart PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)
+add_script_test(restart restart 2)
 
 # Signals, a busy output folder and a full disk (issue 34): one line, exit
 # codes 75 and 74, and the resumed run ends where an uninterrupted one does.
@@ -326,13 +334,7 @@ add_test(NAME hertz_2d_adaptive.vtu
     --contains "${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_adaptive/output-hertz_2d_adaptive/solution/*.vtu"
     "Name=\"displacement\"" "Name=\"contact_state\"" "Name=\"contact_pressure\"")
 set_tests_properties(hertz_2d_adaptive.vtu PROPERTIES FIXTURES_REQUIRED hertz_2d_adaptive)
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
-add_test(NAME restart_adaptive
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_adaptive.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_adaptive)
-set_tests_properties(restart_adaptive PROPERTIES ENVIRONMENT "${_environment}"
-  PROCESSORS 2)
+add_script_test(restart_adaptive restart_adaptive 2)
 
 # Lame's thick-walled tube and sphere at nu = 0.4999 (check_lame.py): the
 # B-bar element within 1 % of the exact displacement and stresses, on 1, 2
@@ -519,13 +521,7 @@ endforeach()
 # A plastic history through a kill and a resume on another rank count, the
 # mesh adapted in every increment: the same residual impression and plastic
 # strains as the uninterrupted run (restart_plastic.sh).
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_plastic)
-add_test(NAME restart_plastic
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_plastic.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/restart_plastic)
-set_tests_properties(restart_plastic PROPERTIES ENVIRONMENT "${_environment}"
-  PROCESSORS 2)
+add_script_test(restart_plastic restart_plastic 2)
 
 # The uniaxial cube on a mesh adapted in every increment (hanging vertices
 # on the moved top face, the history carried to the children): still the
@@ -549,32 +545,17 @@ set_tests_properties(j2_uniaxial_adaptive.exact PROPERTIES FIXTURES_REQUIRED
 # The residual impression of step-42's indentation, pressed and lifted, on
 # 4, 8 and 16 cells per edge: a permanent dent that converges with the
 # mesh (residual_impression.sh).
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
-add_test(NAME residual_impression
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/residual_impression.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/residual_impression)
-set_tests_properties(residual_impression PROPERTIES ENVIRONMENT "${_environment}")
+add_script_test(residual_impression residual_impression 1)
 
 # The O-ring squeezed by 25 % (neo-Hookean at finite strain) on 2, 3 and 4
 # levels of refinement: its force converges with the mesh
 # (o_ring_convergence.sh).
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/o_ring_convergence)
-add_test(NAME o_ring_convergence
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/o_ring_convergence.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/o_ring_convergence)
-set_tests_properties(o_ring_convergence PROPERTIES ENVIRONMENT "${_environment}")
+add_script_test(o_ring_convergence o_ring_convergence 1)
 
 # Ironing (a rigid cylinder slid over a neo-Hookean block at finite strain)
 # on 2 ranks, frictionless and with friction: the pressing nodes lie on the
 # die, mirrored forces, full slip inside the cone (ironing.sh).
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/ironing)
-add_test(NAME ironing.mpirun=2
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/ironing.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/ironing)
-set_tests_properties(ironing.mpirun=2 PROPERTIES ENVIRONMENT "${_environment}" PROCESSORS 2)
+add_script_test(ironing.mpirun=2 ironing 2)
 
 # Objectivity at finite strain: a pair pressed and turned by 90 degrees in 6
 # increments on 2 ranks; its pressures and tangential tractions after the
@@ -604,12 +585,7 @@ endforeach()
 
 # Increments grown past the loading history's times on the O-ring: fewer
 # increments, the same end state (grown_increments.sh).
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/grown_increments)
-add_test(NAME grown_increments
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/grown_increments.sh $<TARGET_FILE:contact>
-          ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/grown_increments)
-set_tests_properties(grown_increments PROPERTIES ENVIRONMENT "${_environment}")
+add_script_test(grown_increments grown_increments 1)
 
 # 3D ironing with the die a rigid tool from a surface mesh, on 2 ranks: its
 # forces per unit width against the 2D scene's on the same cells (its run
