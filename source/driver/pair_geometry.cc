@@ -1,5 +1,9 @@
+#include <deal.II/lac/full_matrix.h>
+
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/driver/pair_geometry.h>
+
+#include <deque>
 
 namespace FrictionalContact
 {
@@ -61,6 +65,81 @@ namespace FrictionalContact
       total.amg_updates += more.amg_updates;
       total.seconds += more.seconds;
     }
+
+    /// The passes whose differences Anderson's mixing combines.
+    constexpr unsigned int anderson_depth = 3;
+
+    /**
+     * Anderson's mixing for a fixed point x = g(x) of vectors (Walker and
+     * Ni, 2011), with the differences of the last few passes: from x_k and
+     * g(x_k), x_k+1 = g(x_k) - sum_i gamma_i (g_i+1 - g_i), where gamma
+     * minimises |f_k - sum_i gamma_i (f_i+1 - f_i)| over the residuals
+     * f = g(x) - x. Owns those differences.
+     */
+    class AndersonMixing
+    {
+    public:
+      using Vector = TrilinosWrappers::MPI::Vector;
+
+      explicit AndersonMixing(const unsigned int depth)
+        : depth(depth)
+      {}
+
+      /// Replaces @p x (x_k) by x_k+1, given @p g = g(x_k). Collective.
+      void
+      next(const Vector &g, Vector &x)
+      {
+        Vector f = g;
+        f -= x;
+        if (!last_f.empty())
+          {
+            residual_changes.push_back(f);
+            residual_changes.back() -= last_f.front();
+            image_changes.push_back(g);
+            image_changes.back() -= last_g.front();
+            if (residual_changes.size() > depth)
+              {
+                residual_changes.pop_front();
+                image_changes.pop_front();
+              }
+          }
+        last_f.assign(1, f);
+        last_g.assign(1, g);
+        x = g;
+        const unsigned int m = residual_changes.size();
+        if (m == 0)
+          return;
+        // The normal equations of the small least-squares problem, with
+        // a relative shift against round-off in nearly parallel columns.
+        FullMatrix<double> A(m, m);
+        std::vector<double> rhs(m);
+        double             largest = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            for (unsigned int j = 0; j <= i; ++j)
+              A(i, j) = A(j, i) = residual_changes[i] * residual_changes[j];
+            rhs[i]  = residual_changes[i] * f;
+            largest = std::max(largest, A(i, i));
+          }
+        if (!(largest > 0))
+          return;
+        for (unsigned int i = 0; i < m; ++i)
+          A(i, i) += 1e-12 * largest;
+        A.gauss_jordan();
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            double gamma = 0;
+            for (unsigned int j = 0; j < m; ++j)
+              gamma += A(i, j) * rhs[j];
+            x.add(-gamma, image_changes[i]);
+          }
+      }
+
+    private:
+      const unsigned int  depth;
+      std::deque<Vector>  residual_changes, image_changes;
+      std::vector<Vector> last_f, last_g;
+    };
   } // namespace
 
 
@@ -92,13 +171,12 @@ namespace FrictionalContact
       return outcome;
 
     // The configuration x whose geometry the last solve had, and where
-    // that solve ended, s: the fixed point x = s, relaxed by Aitken's
-    // factor (Irons and Tuck) from the last two passes.
+    // that solve ended, s: the fixed point x = s, accelerated by
+    // Anderson's mixing of the last passes.
     SolveStatistics               work = outcome.statistics;
     TrilinosWrappers::MPI::Vector taken = start, reached = start;
-    TrilinosWrappers::MPI::Vector step = body.make_vector(), last_step;
     TrilinosWrappers::MPI::Vector ghosted = body.make_ghosted_vector();
-    double                        factor  = 1;
+    AndersonMixing                mixing(anderson_depth);
     // Each solve starts from the last one's solution (its forces in
     // Cartesian components, before the frames change).
     WarmStart<dim> warm_start{body.make_vector(), {}};
@@ -140,23 +218,9 @@ namespace FrictionalContact
                 "increment";
             return outcome;
           }
-        step = reached;
-        step -= taken;
-        if (pass > 1)
-          {
-            TrilinosWrappers::MPI::Vector difference = step;
-            difference -= last_step;
-            const double square = difference * difference;
-            if (square > 0)
-              factor *= -(last_step * difference) / square;
-          }
-        last_step = step;
-        taken.add(factor, step);
-        if (factor != 1)
-          {
-            ghosted = taken;
-            contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
-          }
+        mixing.next(reached, taken);
+        ghosted = taken;
+        contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
         outcome = solve_once(&warm_start);
         add_work(work, outcome.statistics);
       }
