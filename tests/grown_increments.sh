@@ -26,12 +26,7 @@ subsection Loading
   set Easy increment iterations = $easy
   set Grow past increment times = $grow
 end
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-    set Write csv tables = true
-  end
-end
+include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
   "$contact" $run.prm > $run.log 2>&1 || { cat $run.log; fail "the $run run failed"; }
 done

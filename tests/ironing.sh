@@ -30,12 +30,7 @@ end
 subsection Contact
   set Friction coefficient = $mu
 end
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-    set Write csv tables = true
-  end
-end
+include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
   mpirun -np 2 "$contact" mu-$mu.prm > mu-$mu.log 2>&1 || { cat mu-$mu.log; fail "the run with mu = $mu failed"; }
 done

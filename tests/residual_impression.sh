@@ -37,12 +37,7 @@ subsection Loading
   set End time = 2
   set Number of increments = 2
 end
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-    set Write csv tables = true
-  end
-end
+include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
   "$contact" mesh-$n.prm > mesh-$n.log 2>&1 || { cat mesh-$n.log; fail "the run on $n cells per edge failed"; }
 done

@@ -29,12 +29,7 @@ subsection Mesh refinement
   set Refine fraction = 0.1
   set Cycles = 1
 end
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-    set Write csv tables = true
-  end
-end
+include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
 done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm

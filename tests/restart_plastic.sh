@@ -41,12 +41,7 @@ subsection Loading
   set End time = 4
   set Number of increments = 4
 end
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-    set Write csv tables = true
-  end
-end
+include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
 done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm
