@@ -606,3 +606,14 @@ add_test(NAME ironing_3d.against_2d
           ${_directory}/output-ironing_3d/statistics --drag 0.01 --press 0.04)
 set_tests_properties(ironing_3d.against_2d PROPERTIES
   FIXTURES_REQUIRED "ironing_3d;ironing_2d_scene")
+
+# The O-ring nearly incompressible on the mean-dilatation element: 40
+# increments without a cut (o_ring_nearly_incompressible.prm).
+set(_directory ${CMAKE_CURRENT_BINARY_DIR}/o_ring_nearly_incompressible)
+configure_file(o_ring_nearly_incompressible.prm
+  ${_directory}/o_ring_nearly_incompressible.prm @ONLY)
+add_test(NAME o_ring_nearly_incompressible
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
+          $<TARGET_FILE:contact> o_ring_nearly_incompressible.prm 1
+  WORKING_DIRECTORY ${_directory})
+set_tests_properties(o_ring_nearly_incompressible PROPERTIES ENVIRONMENT "${_environment}")

@@ -747,6 +747,13 @@ namespace FrictionalContact
 
         const LineSearchStep step = search_along_step(
           problem, conditions, c, sets.c_t, friction, mean_c, du, r, work);
+        // A NaN merit would accept every step (its comparisons are false).
+        if (std::isnan(step.merit_before) || std::isnan(step.merit_after))
+          {
+            result.failure = "NaN in the line search's merit at Newton iteration " +
+                             std::to_string(k + 1);
+            break;
+          }
         forcing.record(std::sqrt(step.merit_before),
                        std::sqrt(step.merit_after),
                        step.t == 1);

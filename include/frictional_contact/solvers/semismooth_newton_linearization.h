@@ -335,7 +335,9 @@ namespace FrictionalContact
               z *= bound_j / z.norm();
             Tensor<1, dim> phi_t = r_j - z;
             phi_t[0]             = 0;
-            sum += (phi_n * phi_n + phi_t * phi_t) / c[j];
+            // A node whose normal direction a support holds has c_j = 0
+            // (no free normal component): the mean scale serves it.
+            sum += (phi_n * phi_n + phi_t * phi_t) / (c[j] > 0 ? c[j] : mean_c);
           }
         return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
                (nonlinear_balance ? (t == 0 ? balance_a : t == 1 ? balance_a + 2 * balance_b + balance_c :
