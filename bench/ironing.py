@@ -20,7 +20,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from check_analytic import read_statistics  # noqa: E402
-from doc_tables import append_rows, write_tables  # noqa: E402
+from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import run as run_program  # noqa: E402
 
 COLUMNS = ["level", "mu", "d", "time", "die_x", "drag", "press", "newton_iterations",
@@ -87,9 +87,7 @@ def main():
                       f"{sum(r['newton_iterations'] for r in mine)} Newton steps, "
                       f"{mine[0]['wall_s']:.1f} s")
                 rows += mine
-    if os.path.exists(args.csv):
-        os.remove(args.csv)
-    append_rows(args.csv, COLUMNS, rows)
+    replace_rows(args.csv, COLUMNS, rows)
     with open(args.csv) as f:
         plot(list(csv.DictReader(f)), os.path.join(ROOT, "doc", "figures", "ironing_2d-forces.png"))
     for line in write_tables():

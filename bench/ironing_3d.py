@@ -22,7 +22,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from check_analytic import read_statistics  # noqa: E402
-from doc_tables import append_rows, write_tables  # noqa: E402
+from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import run as run_program  # noqa: E402
 
 COLUMNS = ["cells_along", "dimension", "ranks", "d", "increments", "newton_iterations",
@@ -89,9 +89,7 @@ def main():
                            largest_press_difference=f"{press:.2e}" if dimension == 3 else "")
                 print(", ".join(f"{k} {row[k]}" for k in COLUMNS), flush=True)
                 rows.append(row)
-    if os.path.exists(args.csv):
-        os.remove(args.csv)
-    append_rows(args.csv, COLUMNS, rows)
+    replace_rows(args.csv, COLUMNS, rows)
     for line in write_tables():
         print(line)
 

@@ -25,7 +25,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from check_analytic import read_statistics  # noqa: E402
-from doc_tables import append_rows, write_tables  # noqa: E402
+from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import ENVIRONMENT  # noqa: E402
 
 COLUMNS = ["nu", "law", "level", "d", "force", "increments", "cuts", "wall_s", "outcome"]
@@ -88,9 +88,7 @@ def main():
                           f"{row['increments']} increments, {row['cuts']} cuts, "
                           f"{row['wall_s']:.1f} s, {row['outcome']}", flush=True)
                     rows.append(row)
-    if os.path.exists(args.csv):
-        os.remove(args.csv)
-    append_rows(args.csv, COLUMNS, rows)
+    replace_rows(args.csv, COLUMNS, rows)
     for line in write_tables():
         print(line)
 

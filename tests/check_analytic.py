@@ -41,6 +41,13 @@ def read_statistics(path):
     return [{name: float(row[i]) for name, i in columns.items()} for row in rows]
 
 
+def report(failures):
+    """Prints each failure as '*** ...'; the exit code: 1 if any, else 0."""
+    for failure in failures:
+        print("*** " + failure)
+    return 1 if failures else 0
+
+
 def read_parameters(path):
     """'Material/Young's modulus' -> '1' from a ShortPRM file."""
     values, sections = {}, []

@@ -25,7 +25,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_analytic import read_statistics  # noqa: E402
+from check_analytic import read_statistics, report  # noqa: E402
 
 INDENTATION = 1.4
 RADIUS = 3.0
@@ -106,9 +106,7 @@ def main():
     last = rough[-1]
     print(f"frictional: at t = {last['Time']:g} drag {last['Contact force x']:.6g}, "
           f"press {-last['Contact force y']:.6g}")
-    for failure in failures:
-        print("*** " + failure)
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_analytic import read_statistics  # noqa: E402
+from check_analytic import read_statistics, report  # noqa: E402
 
 
 def main():
@@ -44,9 +44,7 @@ def main():
         failures.append(f"the drag differs by {drag:.3g}, more than {args.drag:g}")
     if not press <= args.press:
         failures.append(f"the press differs by {press:.3g}, more than {args.press:g}")
-    for failure in failures:
-        print("*** " + failure)
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

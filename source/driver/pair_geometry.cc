@@ -91,21 +91,21 @@ namespace FrictionalContact
       {
         Vector f = g;
         f -= x;
-        if (!last_f.empty())
+        if (last_f.size() > 0)
           {
             residual_changes.push_back(f);
-            residual_changes.back() -= last_f.front();
+            residual_changes.back() -= last_f;
             image_changes.push_back(g);
-            image_changes.back() -= last_g.front();
+            image_changes.back() -= last_g;
             if (residual_changes.size() > depth)
               {
                 residual_changes.pop_front();
                 image_changes.pop_front();
               }
           }
-        last_f.assign(1, f);
-        last_g.assign(1, g);
-        x = g;
+        last_f = f;
+        last_g = g;
+        x      = g;
         const unsigned int m = residual_changes.size();
         if (m == 0)
           return;
@@ -136,9 +136,10 @@ namespace FrictionalContact
       }
 
     private:
-      const unsigned int  depth;
-      std::deque<Vector>  residual_changes, image_changes;
-      std::vector<Vector> last_f, last_g;
+      const unsigned int depth;
+      std::deque<Vector> residual_changes, image_changes;
+      /// f and g of the last pass (empty before the first).
+      Vector last_f, last_g;
     };
   } // namespace
 
@@ -185,11 +186,10 @@ namespace FrictionalContact
         warm_start.forces.resize(contact.n_local());
         for (unsigned int j = 0; j < contact.n_local(); ++j)
           warm_start.forces[j] = contact.to_cartesian(j, outcome.reactions[j]);
-        warm_start.du = outcome.du;
-        warm_start.du -= start;
-        warm_start.du += u;
         reached = u;
         reached += outcome.du;
+        warm_start.du = reached;
+        warm_start.du -= start;
         ghosted = reached;
         contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
         const auto &change = contact.last_pair_change();
