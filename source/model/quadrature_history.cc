@@ -3,6 +3,7 @@
 #include <frictional_contact/model/quadrature_history.h>
 
 #include <cstring>
+#include <utility>
 #include <limits>
 
 namespace FrictionalContact
@@ -73,10 +74,7 @@ namespace FrictionalContact
   double *
   QuadratureHistory<dim>::values(const CellIterator &cell)
   {
-    const auto data = storage.try_get_data(cell);
-    if (!data || (*data)[0]->values.empty())
-      return nullptr;
-    return (*data)[0]->values.data();
+    return const_cast<double *>(std::as_const(*this).values(cell));
   }
 
 
@@ -85,6 +83,10 @@ namespace FrictionalContact
   const double *
   QuadratureHistory<dim>::values(const CellIterator &cell) const
   {
+    // A law without history has nothing stored (and the lookup, by the
+    // cell's id, is what costs).
+    if (n_values(cell->material_id()) == 0)
+      return nullptr;
     const auto data = storage.try_get_data(cell);
     if (!data || (*data)[0]->values.empty())
       return nullptr;
