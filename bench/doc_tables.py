@@ -370,6 +370,23 @@ def ironing_3d(root):
                     body)
 
 
+def ironing_3d_scale(root):
+    """bench/ironing_3d_scale.py: the 3D ironing on a finer mesh, with the
+    preconditioner built again on the tangent and without."""
+    body = []
+    for r in rows(root, "ironing-3d-scale.csv"):
+        factor = float(r["tangent_rebuild_factor"])
+        body.append([r["cells"], r["ranks"], thousands(r["d"]),
+                     f"after {factor:g} x the Krylov iterations" if factor > 0 else "never",
+                     r["increments"], r["cuts"], r["newton_iterations"],
+                     f"{int(r['krylov_iterations']) / int(r['newton_iterations']):.1f}",
+                     r["amg_setups"], r["geometry_solves"], seconds(r["solve_s"]),
+                     r["solve_in_elastic_solves"]])
+    return markdown(["cells", "ranks", "d", "AMG built again on the tangent", "increments",
+                     "cuts", "Newton steps", "Krylov per Newton step", "AMG set-ups",
+                     "geometry solves", "solve", "solve in elastic solves"], body)
+
+
 def o_ring_locking(root):
     """bench/o_ring_locking.py: per Poisson's ratio and law, the force at
     the end on each level (or what stopped the run), with its cuts and
@@ -400,6 +417,7 @@ TABLES = {
     "ironing": ironing,
     "finite-strain": finite_strain,
     "ironing-3d": ironing_3d,
+    "ironing-3d-scale": ironing_3d_scale,
     "linear-speed": linear_speed,
     "step42": step42,
     "same-solutions": same_solutions,

@@ -35,6 +35,8 @@ namespace FrictionalContact
     const ContactOperator<dim> &contact = model.get_contact();
     mortar.reset();
     preconditioner_basis.reset();
+    krylov_per_step_after_build = 0;
+    rebuild_for_tangent         = false;
     linear_solver.set_geometric_multigrid(nullptr, nullptr);
     mortar_cycle.reset();
     geometric.reset();
@@ -304,9 +306,22 @@ namespace FrictionalContact
     else
       body.internal_force(start, load);
     load.sadd(-1., load_factor, body.load_vector());
+    const bool rebuild = rebuild_for_tangent && !geometric;
+    rebuild_for_tangent = false;
+    if (rebuild)
+      krylov_per_step_after_build = 0;
+    if (rebuild && !contact.has_pairs())
+      {
+        // The tangent at the start is in K's matrix itself.
+        linear_solver.release();
+        linear_solver.initialize(body.stiffness(),
+                                 body.rigid_body_modes(),
+                                 0.,
+                                 body.volumetric_split());
+      }
     if (contact.has_pairs())
       {
-        if (preconditioner_basis)
+        if (preconditioner_basis && !rebuild)
           // The AMG of the first increment on this mesh still serves: the
           // mortar rows change little from one increment to the next
           // (doc/performance.md, "Two bodies").
@@ -317,7 +332,15 @@ namespace FrictionalContact
             // The preconditioners from K_w as the basis was made (for a
             // nonlinear law the solves then take its tangent).
             linear_solver.release();
-            linear_solver.initialize(mortar->initial_stiffness(),
+            // On a copy of the tangent K_T,w at the start when rebuilt for
+            // it (the basis makes K_T,w anew at each Newton step).
+            if (rebuild)
+              {
+                tangent_copy.copy_from(mortar->stiffness().matrix("the preconditioner"));
+                tangent_copy_operator = std::make_unique<AssembledStiffness>(tangent_copy);
+              }
+            linear_solver.initialize(rebuild ? *tangent_copy_operator :
+                                               mortar->initial_stiffness(),
                                      mortar->modes_to_w(body.rigid_body_modes()),
                                      0.,
                                      mortar->volumetric_split());
@@ -389,6 +412,8 @@ namespace FrictionalContact
         result.iterations = 1;
         result.converged  = true;
       }
+    if (model.nonlinear())
+      note_krylov_growth(result);
     outcome.du = outcome.du_solved;
     if (mortar)
       mortar->displacement_to_u(outcome.du_solved, outcome.du);
@@ -479,6 +504,23 @@ namespace FrictionalContact
     result.linear_iterations += elastic.linear_iterations;
     result.amg_setups += elastic.amg_setups;
     result.seconds += elastic.seconds;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::note_krylov_growth(const SolveStatistics &result)
+  {
+    if (result.iterations == 0)
+      return;
+    const double per_step = double(result.linear_iterations) / result.iterations;
+    if (krylov_per_step_after_build == 0)
+      krylov_per_step_after_build = per_step;
+    else
+      rebuild_for_tangent = linear_solver.tangent_rebuild_factor() > 0 &&
+                            per_step > linear_solver.tangent_rebuild_factor() *
+                                         krylov_per_step_after_build;
   }
 
 

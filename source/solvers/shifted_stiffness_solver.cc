@@ -145,6 +145,16 @@ namespace FrictionalContact
                       "The AMG built for K + sigma_ref I is reused while the "
                       "shift sigma = 1/beta stays within this factor of "
                       "sigma_ref (>= 1).");
+    prm.declare_entry("Tangent rebuild factor",
+                      "2",
+                      Patterns::Double(0.),
+                      "For nonlinear laws (plasticity, finite strain), whose "
+                      "tangent drifts from the stiffness the preconditioner "
+                      "was built on: it is built again on the tangent where "
+                      "an increment starts once the last solve took more "
+                      "than this factor times the Krylov iterations per "
+                      "Newton step of the first solve after the last build "
+                      "(0: never; not with geometric multigrid).");
     prm.declare_entry("AMG smoother sweeps",
                       "2",
                       Patterns::Integer(1),
@@ -208,6 +218,7 @@ namespace FrictionalContact
     jacobi_threshold      = prm.get_double("Jacobi threshold");
     multigrid_degree      = prm.get_integer("Multigrid smoother degree");
     rebuild_factor        = prm.get_double("AMG rebuild factor");
+    tangent_rebuild       = prm.get_double("Tangent rebuild factor");
     refactorization_factor = prm.get_double("Cholesky refactorization factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother_type         = prm.get("AMG smoother type");

@@ -210,6 +210,16 @@ namespace FrictionalContact
     void
     make_geometric_multigrid(const Model<dim> &model);
 
+    /**
+     * For a nonlinear law: takes the baseline of Krylov iterations per
+     * Newton step from the first solve after the preconditioner was built,
+     * and asks for a build on the tangent before the next solve once
+     * @p result took more than <Linear solver/Tangent rebuild factor>
+     * times it.
+     */
+    void
+    note_krylov_growth(const SolveStatistics &result);
+
     /// Results per candidate for the solution in @p outcome.
     ContactResults<dim>
     contact_results(const ContactOperator<dim>  &contact,
@@ -230,6 +240,15 @@ namespace FrictionalContact
     std::unique_ptr<GeometricMultigrid<dim>> geometric_with_springs;
     /// With contact pairs, the first for K_w of the increment's basis.
     std::unique_ptr<MortarPreconditioner<dim>> mortar_cycle;
+    /// The copy of the tangent K_T,w a rebuild for it took (contact
+    /// pairs, whose basis makes K_T,w anew at each Newton step).
+    TrilinosWrappers::SparseMatrix       tangent_copy;
+    std::unique_ptr<StiffnessOperator>   tangent_copy_operator;
+    /// Krylov iterations per Newton step of the first solve after the
+    /// preconditioner was built (0: not yet), and whether the next solve
+    /// builds it again on the tangent (note_krylov_growth()).
+    double krylov_per_step_after_build = 0;
+    bool   rebuild_for_tangent         = false;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

@@ -104,6 +104,13 @@ namespace FrictionalContact
     set_geometric_multigrid(const SpringPreconditioner *of_stiffness,
                             SpringPreconditioner       *with_springs);
 
+    /// <Tangent rebuild factor> (0: never).
+    double
+    tangent_rebuild_factor() const
+    {
+      return tangent_rebuild;
+    }
+
     /// Whether <Preconditioner> asks for geometric multigrid.
     bool
     wants_geometric_multigrid() const
@@ -274,6 +281,7 @@ namespace FrictionalContact
     double       jacobi_threshold;
     unsigned int multigrid_degree;
     double       rebuild_factor;
+    double       tangent_rebuild;
     double       refactorization_factor;
     unsigned int smoother_sweeps;
     std::string  smoother_type;

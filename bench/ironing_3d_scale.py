@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""The 3D ironing (tests/ironing_3d.prm: a neo-Hookean block, the die a
+rigid tool from a surface mesh, mortar contact, mu = 0.3) on a finer mesh
+than its test, on 2 ranks: what a solve of it costs and where that goes.
+Runs it with the preconditioner built again on the tangent as the Krylov
+iterations grow (<Linear solver/Tangent rebuild factor>, the default 2)
+and never (0), and once without contact for the unit of time (one elastic
+solve on the same mesh), in one run of this script. Records the
+increments, cuts, Newton steps, Krylov iterations, solves of the pairs'
+geometry, and the solve time (the timer's Assembly, Elastic solve and
+Contact solve) in seconds and in elastic solves. Rewrites
+doc/benchmarks/ironing-3d-scale.csv and the table of doc/performance.md
+("The 3D ironing at scale").
+
+usage: bench/ironing_3d_scale.py [--program build/contact]
+                                 [--cells 72,8,24] [--factors 2,0]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from doc_tables import replace_rows, write_tables  # noqa: E402
+from runs import run as run_program  # noqa: E402
+
+COLUMNS = ["cells", "ranks", "d", "tangent_rebuild_factor", "increments", "cuts",
+           "newton_iterations", "krylov_iterations", "amg_setups", "geometry_solves",
+           "solve_s", "elastic_solve_s", "solve_in_elastic_solves"]
+NO_OUTPUT = ("set Output directory = output\nsubsection Postprocess\n"
+             "  subsection Visualization\n    set Write vtu = false\n  end\nend\n")
+NO_CONTACT = ("subsection Contact\n  set Pairs =\nend\n"
+              "subsection Loading\n  set Number of increments = 1\nend\n")
+
+
+def scene(folder, cells):
+    """The test's scene on @p cells (along, across, up), with a die of 480
+    facets around (its facets shorter than the cells)."""
+    subprocess.run([sys.executable, "-c",
+                    open(os.path.join(ROOT, "meshes", "die_3d.py")).read()
+                    .replace("AROUND, ALONG = 120, 3", "AROUND, ALONG = 480, 3")],
+                   cwd=folder, check=True)
+    with open(os.path.join(ROOT, "tests", "ironing_3d.prm")) as f:
+        text = f.read()
+    along, across, up = cells
+    return (text.replace("@PROJECT_SOURCE_DIR@/meshes/die_3d.obj",
+                         os.path.join(folder, "die_3d.obj"))
+                .replace("set X repetitions = 18", f"set X repetitions = {along}")
+                .replace("set Y repetitions = 1", f"set Y repetitions = {across}")
+                .replace("set Z repetitions = 6", f"set Z repetitions = {up}")) + NO_OUTPUT
+
+
+def run(program, text, folder):
+    with open(os.path.join(folder, "scene.prm"), "w") as f:
+        f.write(text)
+    output, _ = run_program([program, "scene.prm"], 2, folder)
+    summary = re.findall(r"-- summary: (.*)", output)[-1]
+    sections = dict((name.strip(), float(value)) for name, value in
+                    re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
+    increments = re.findall(r"^Increment \d+/\d+, t = \S+: (\d+) Newton iterations, "
+                            r"(\d+) Krylov iterations, (\d+) AMG set-ups", output, re.M)
+    geometry = [int(n) for n in re.findall(r"contact pairs' geometry: (\d+) solve", output)]
+    return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
+                increments=len(increments),
+                cuts=len(re.findall(r"^Cut in half", output, re.M)),
+                newton_iterations=sum(int(n) for n, _, _ in increments),
+                krylov_iterations=sum(int(k) for _, k, _ in increments),
+                amg_setups=sum(int(a) for _, _, a in increments),
+                geometry_solves=sum(geometry),
+                solve_s=sum(sections.get(k, 0.) for k in
+                            ("Assembly", "Elastic solve", "Contact solve")))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter,
+                                     epilog=__doc__)
+    parser.add_argument("--program", default=os.path.join(ROOT, "build", "contact"))
+    parser.add_argument("--cells", default="72,8,24",
+                        help="cells along, across and up the block of 9 x 1 x 3")
+    parser.add_argument("--factors", default="2,0",
+                        help="<Linear solver/Tangent rebuild factor>s, separated by ','")
+    parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
+                                                      "ironing-3d-scale.csv"))
+    args = parser.parse_args()
+    cells = [int(n) for n in args.cells.split(",")]
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        text = scene(folder, cells)
+        unit = run(args.program, text + NO_CONTACT, folder)["solve_s"]
+        for factor in args.factors.split(","):
+            result = run(args.program, text + "subsection Linear solver\n"
+                         f"  set Tangent rebuild factor = {factor}\nend\n", folder)
+            row = dict(result, cells=" x ".join(map(str, cells)), ranks=2,
+                       tangent_rebuild_factor=factor, elastic_solve_s=f"{unit:.3f}",
+                       solve_in_elastic_solves=f"{result['solve_s'] / unit:.0f}")
+            row["solve_s"] = f"{result['solve_s']:.1f}"
+            print(", ".join(f"{k} {row[k]}" for k in COLUMNS), flush=True)
+            rows.append(row)
+    replace_rows(args.csv, COLUMNS, rows)
+    for line in write_tables():
+        print(line)
+
+
+if __name__ == "__main__":
+    main()
