@@ -33,8 +33,14 @@ COLUMNS = ["cells", "ranks", "d", "tangent_rebuild_factor", "increments", "cuts"
            "solve_s", "elastic_solve_s", "solve_in_elastic_solves"]
 NO_OUTPUT = ("set Output directory = output\nsubsection Postprocess\n"
              "  subsection Visualization\n    set Write vtu = false\n  end\nend\n")
-NO_CONTACT = ("subsection Contact\n  set Pairs =\nend\n"
-              "subsection Loading\n  set Number of increments = 1\nend\n")
+# The unit: the block linear elastic, its top pressed down, no contact.
+ELASTIC = ("subsection Material\n  set Model = linear elastic\n"
+           "  set Kinematics = small strain\nend\n"
+           "subsection Boundary conditions\n  set Prescribed boundaries = top: z\n"
+           "  set Prescribed displacement = 0; 0; -0.1 * t\nend\n"
+           "subsection Contact\n  set Pairs =\n"
+           "  subsection Rigid tool\n    set Name =\n  end\nend\n"
+           "subsection Loading\n  set Number of increments = 1\nend\n")
 
 
 def scene(folder, cells):
@@ -91,7 +97,7 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         text = scene(folder, cells)
-        unit = run(args.program, text + NO_CONTACT, folder)["solve_s"]
+        unit = run(args.program, text + ELASTIC, folder)["solve_s"]
         for factor in args.factors.split(","):
             result = run(args.program, text + "subsection Linear solver\n"
                          f"  set Tangent rebuild factor = {factor}\nend\n", folder)
