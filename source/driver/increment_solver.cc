@@ -336,6 +336,10 @@ namespace FrictionalContact
             // it (the basis makes K_T,w anew at each Newton step).
             if (rebuild)
               {
+                // Emptied first: copy_from() into a matrix of another
+                // pattern decides per rank whether to copy the layout, and
+                // ranks that decide differently wait for each other forever.
+                tangent_copy.clear();
                 tangent_copy.copy_from(mortar->stiffness().matrix("the preconditioner"));
                 tangent_copy_operator = std::make_unique<AssembledStiffness>(tangent_copy);
               }
@@ -391,6 +395,8 @@ namespace FrictionalContact
           contact.obstacle_displacement(t_end) - contact.obstacle_displacement(t_start);
         outcome.problem = make_problem(model, load, start, obstacle_motion);
         outcome.problem->nonlinear = outcome.response.get();
+        if (warm_start)
+          outcome.problem->tolerance = warm_start->tolerance;
         if (contact.follows_configuration())
           outcome.problem->follow_geometry =
             [&contact = model.get_contact(),

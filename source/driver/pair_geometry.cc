@@ -69,6 +69,10 @@ namespace FrictionalContact
     /// The passes whose differences Anderson's mixing combines.
     constexpr unsigned int anderson_depth = 3;
 
+    /// A pass before the last stops at this fraction of the last change
+    /// of the geometry (relative, as the Newton tolerance is).
+    constexpr double looseness = 1e-2;
+
     /**
      * Anderson's mixing for a fixed point x = g(x) of vectors (Walker and
      * Ni, 2011), with the differences of the last few passes: from x_k and
@@ -197,8 +201,18 @@ namespace FrictionalContact
         outcome.geometry_change = change.normal;
         // Gaps are measured against the displacement so far: an
         // increment cut small does not ask for a smaller change.
-        const bool settled =
-          change.normal <= tolerance && change.gap <= tolerance * reached.linfty_norm();
+        const double relative_gap_change = change.gap / reached.linfty_norm();
+        const bool   settled = change.normal <= tolerance && relative_gap_change <= tolerance;
+        if (settled && outcome.statistics.loosened && pass < max_passes)
+          {
+            // Settled on a solve stopped short: once more to the method's
+            // tolerance, on the geometry where it ended.
+            taken                = reached;
+            warm_start.tolerance = 0;
+            outcome              = solve_once(&warm_start);
+            add_work(work, outcome.statistics);
+            continue;
+          }
         if (settled || pass == max_passes)
           {
             const SolveStatistics last = outcome.statistics;
@@ -221,6 +235,10 @@ namespace FrictionalContact
         mixing.next(reached, taken);
         ghosted = taken;
         contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
+        // While the geometry still moves, the solve need not be more
+        // accurate than a fraction of that move.
+        warm_start.tolerance =
+          looseness * std::max(change.normal, relative_gap_change);
         outcome = solve_once(&warm_start);
         add_work(work, outcome.statistics);
       }

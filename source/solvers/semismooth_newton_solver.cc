@@ -638,6 +638,7 @@ namespace FrictionalContact
     bool       friction   = has_friction && !cold_start;
 
     const double load_norm = problem.load.l2_norm();
+    const double tolerance = std::max(this->stop.tolerance, problem.tolerance);
     NewtonWorkspace<dim> work(du, n);
     // Without candidates (a nonlinear body that touches nothing) any
     // positive scale serves the merit's force balance.
@@ -677,9 +678,10 @@ namespace FrictionalContact
               problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);
           }
         // Done when the residuals of the current iterate are small.
-        if (k > 0 && meets(this->stop.tolerance, problem, du, work.K_du, result.residuals))
+        if (k > 0 && meets(tolerance, problem, du, work.K_du, result.residuals))
           {
             result.converged = true;
+            result.loosened  = tolerance > this->stop.tolerance;
             break;
           }
 
@@ -730,7 +732,7 @@ namespace FrictionalContact
                                r, forcing_term,
                                // The stopping rule's force: p, or K du where an
                                // obstacle drives the body without a load.
-                               0.1 * this->stop.tolerance *
+                               0.1 * tolerance *
                                  std::max({load_norm,
                                            work.K_du.l2_norm(),
                                            problem.nonlinear != nullptr ?

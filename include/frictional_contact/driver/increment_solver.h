@@ -66,6 +66,9 @@ namespace FrictionalContact
   {
     TrilinosWrappers::MPI::Vector du;
     std::vector<Tensor<1, dim>>   forces;
+    /// The solve's stopping tolerance where looser than the method's
+    /// (IncrementalProblem::tolerance; 0: the method's).
+    double tolerance = 0;
   };
 
   /**

@@ -90,6 +90,11 @@ namespace FrictionalContact
     ContactHeldBodies contact_held;
     /// The internal force of nonlinear laws (nullptr: K du).
     NonlinearStiffness *nonlinear = nullptr;
+    /// A looser stopping tolerance for this solve than the method's (a
+    /// pass of the pairs' geometry that is not the last); 0: the
+    /// method's. The semismooth Newton method takes it, the others keep
+    /// their own.
+    double tolerance = 0;
     /**
      * Where the frames follow the configuration (finite strain against a
      * curved obstacle): takes the gaps, frames and obstacle_slip of the
@@ -187,6 +192,9 @@ namespace FrictionalContact
     unsigned int amg_updates    = 0;
     double       seconds        = 0;
     double       last_step      = 0;
+    /// Whether it stopped at IncrementalProblem::tolerance, looser than
+    /// the method's.
+    bool         loosened       = false;
     Residuals    residuals;
     /// Why the solve stopped, if it did not converge.
     std::string  failure;
