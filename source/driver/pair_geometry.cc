@@ -71,7 +71,7 @@ namespace FrictionalContact
 
     /// A pass before the last stops at this fraction of the last change
     /// of the geometry (relative, as the Newton tolerance is).
-    constexpr double looseness = 1e-2;
+    constexpr double looseness = 1e-3;
 
     /**
      * Anderson's mixing for a fixed point x = g(x) of vectors (Walker and
