@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import run as run_program  # noqa: E402
+from runs import run as run_program, solve_seconds  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -59,15 +59,11 @@ def run(program, scene, variant, ranks, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(f"include {ROOT}/parameters/{scene}\n" + VARIANTS[variant] + NO_OUTPUT)
     output, _ = run_program([program, "scene.prm"], ranks, folder)
-    summary = re.findall(r"-- summary: (.*)", output)[-1]
-    sections = dict((name.strip(), float(value)) for name, value in
-                    re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
     return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
                 increments=len(re.findall(r"^Increment \d+/", output, re.M)),
                 newton_iterations=sum(int(n) for n in
                                       re.findall(r": (\d+) Newton iterations", output)),
-                solve_s=sum(sections.get(k, 0.) for k in
-                            ("Assembly", "Elastic solve", "Contact solve")))
+                solve_s=solve_seconds(output))
 
 
 def main():

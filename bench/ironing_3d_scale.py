@@ -26,7 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import replace_rows, write_tables  # noqa: E402
-from runs import run as run_program  # noqa: E402
+from runs import run as run_program, solve_seconds  # noqa: E402
 
 COLUMNS = ["cells", "ranks", "d", "tangent_rebuild_factor", "increments", "cuts",
            "newton_iterations", "krylov_iterations", "amg_setups", "geometry_solves",
@@ -64,9 +64,6 @@ def run(program, text, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(text)
     output, _ = run_program([program, "scene.prm"], 2, folder)
-    summary = re.findall(r"-- summary: (.*)", output)[-1]
-    sections = dict((name.strip(), float(value)) for name, value in
-                    re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
     increments = re.findall(r"^Increment \d+/\d+, t = \S+: (\d+) Newton iterations, "
                             r"(\d+) Krylov iterations, (\d+) AMG set-ups", output, re.M)
     geometry = [int(n) for n in re.findall(r"contact pairs' geometry: (\d+) solve", output)]
@@ -77,8 +74,7 @@ def run(program, text, folder):
                 krylov_iterations=sum(int(k) for _, k, _ in increments),
                 amg_setups=sum(int(a) for _, _, a in increments),
                 geometry_solves=sum(geometry),
-                solve_s=sum(sections.get(k, 0.) for k in
-                            ("Assembly", "Elastic solve", "Contact solve")))
+                solve_s=solve_seconds(output))
 
 
 def main():

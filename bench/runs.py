@@ -1,5 +1,6 @@
 """Runs a program of a bench, on one rank or through mpirun, timed: the one
-place where the benches written with nonlinear laws start a run."""
+place where the benches written with nonlinear laws start a run, and
+read its solve time."""
 import os
 import re
 import subprocess
@@ -24,3 +25,12 @@ def run(command, ranks, folder):
     if done.returncode != 0:
         sys.exit(f"{' '.join(command)} failed:\n{output[-3000:]}")
     return output, float(re.findall(r"WALL ([0-9.]+)", output)[-1])
+
+
+def solve_seconds(output):
+    """The solve time of a run from its output's summary line: the timer's
+    Assembly, Elastic solve and Contact solve (no set-up, no output)."""
+    summary = re.findall(r"-- summary: (.*)", output)[-1]
+    sections = dict((name.strip(), float(value)) for name, value in
+                    re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
+    return sum(sections.get(k, 0.) for k in ("Assembly", "Elastic solve", "Contact solve"))
