@@ -42,10 +42,7 @@ namespace FrictionalContact
     geometric.reset();
     geometric_with_springs.reset();
     if (!contact.has_pairs())
-      linear_solver.initialize(body.stiffness(),
-                               body.rigid_body_modes(),
-                               0.,
-                               body.volumetric_split());
+      initialize_on_body(body);
     // The cycles of K in u; with contact pairs each increment's K_w gets
     // them through its basis (MortarPreconditioner).
     if (linear_solver.wants_geometric_multigrid())
@@ -314,10 +311,7 @@ namespace FrictionalContact
       {
         // The tangent at the start is in K's matrix itself.
         linear_solver.release();
-        linear_solver.initialize(body.stiffness(),
-                                 body.rigid_body_modes(),
-                                 0.,
-                                 body.volumetric_split());
+        initialize_on_body(body);
       }
     if (contact.has_pairs())
       {
@@ -510,6 +504,18 @@ namespace FrictionalContact
     result.linear_iterations += elastic.linear_iterations;
     result.amg_setups += elastic.amg_setups;
     result.seconds += elastic.seconds;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::initialize_on_body(const ElasticBody<dim> &body)
+  {
+    linear_solver.initialize(body.stiffness(),
+                             body.rigid_body_modes(),
+                             0.,
+                             body.volumetric_split());
   }
 
 

@@ -3,8 +3,8 @@
 #include <frictional_contact/model/quadrature_history.h>
 
 #include <cstring>
-#include <utility>
 #include <limits>
+#include <utility>
 
 namespace FrictionalContact
 {

@@ -213,6 +213,11 @@ namespace FrictionalContact
     void
     make_geometric_multigrid(const Model<dim> &model);
 
+    /// The linear solver and its preconditioners on the body's K as it
+    /// is now (without contact pairs: with them, each basis's K_w).
+    void
+    initialize_on_body(const ElasticBody<dim> &body);
+
     /**
      * For a nonlinear law: takes the baseline of Krylov iterations per
      * Newton step from the first solve after the preconditioner was built,
