@@ -205,7 +205,7 @@ contact_compare_tables(extreme_stiff_newton.same_displacement
 # the nearly incompressible ones (B-bar) to 1 % in the radius, 2 % in the
 # peak pressure and 5 % of p0 in every nodal pressure within 0.8 a.
 foreach(_case hertz_2d:hertz hertz_3d.mpirun=2:hertz cattaneo_2d:cattaneo
-              cattaneo_3d:cattaneo cattaneo_3d_eisenstat_walker:cattaneo
+              cattaneo_3d:cattaneo
               sliding_block:sliding
               "hertz_2d_adaptive:hertz:--radius-tolerance:0.01:--pressure-tolerance:0.01"
               "hertz_3d_adaptive.mpirun=2:hertz:--radius-tolerance:0.02:--pressure-tolerance:0.02"

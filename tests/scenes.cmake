@@ -13,14 +13,14 @@ add_test(NAME scenes/redundant_entry_is_found
 set_tests_properties(scenes/redundant_entry_is_found PROPERTIES
   PASS_REGULAR_EXPRESSION "Dimension = '2' is the default.*Poisson's ratio = '0.30' is the default.*FAILED")
 
-# Every shipped scene runs as shipped, with its own output settings, on 2
-# and 3 MPI ranks (run_scene.py: exit code 0, no NaN, the VTU files it
-# announces complete); a scene too long for the suite runs through
-# tests/scenes/<name>.prm, which includes it and makes only its mesh
-# smaller. The scenes with contact pairs (and a tool) in 2D and 3D also run
-# on 2 ranks under AddressSanitizer (the 3D ones with a ball or a bracket
-# take a minute there): a write beyond a vector's entries corrupts the heap
-# without failing on every machine.
+# Every shipped scene runs as shipped, with its own output settings, on 1
+# rank (without mpirun), 2 and 3 MPI ranks (run_scene.py: exit code 0, no
+# NaN, the VTU files it announces complete); a scene too long for the suite
+# runs through tests/scenes/<name>.prm, which includes it and makes only
+# its mesh or its loading smaller. The scenes with contact pairs (and a
+# tool) in 2D and 3D also run on 2 ranks under AddressSanitizer (the 3D
+# ones with a ball or a bracket take a minute there): a write beyond a
+# vector's entries corrupts the heap without failing on every machine.
 set(_pair_scenes block_on_block_2d block_on_block_3d bracket_2d flat_punch_2d)
 foreach(_scene ${_scenes})
   get_filename_component(_name ${_scene} NAME_WE)
@@ -29,7 +29,7 @@ foreach(_scene ${_scenes})
     set(_run ${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_name}.prm)
     configure_file(scenes/${_name}.prm ${_run} @ONLY)
   endif()
-  set(_variants 2 3)
+  set(_variants 1 2 3)
   if(_name IN_LIST _pair_scenes)
     list(APPEND _variants sanitized)
   endif()
@@ -45,11 +45,15 @@ foreach(_scene ${_scenes})
         FIXTURES_REQUIRED sanitized_program ENVIRONMENT "${_environment}"
         PROCESSORS 2 TIMEOUT 600)
     else()
-      add_test(NAME scenes/${_name}.mpirun=${_variant}
+      set(_test scenes/${_name}.mpirun=${_variant})
+      if(_variant EQUAL 1)
+        set(_test scenes/${_name}.serial)
+      endif()
+      add_test(NAME ${_test}
         COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
                 $<TARGET_FILE:contact> ${_run} ${_variant}
         WORKING_DIRECTORY ${_directory})
-      set_tests_properties(scenes/${_name}.mpirun=${_variant} PROPERTIES
+      set_tests_properties(${_test} PROPERTIES
         ENVIRONMENT "${_environment}" PROCESSORS ${_variant} TIMEOUT 600)
     endif()
   endforeach()
