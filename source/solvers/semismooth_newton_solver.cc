@@ -241,27 +241,21 @@ namespace FrictionalContact
                                       &r :
                                       nullptr);
       // K du at du_D. A nonlinear law's N(du) and tangent were made at the
-      // iterate (search_along_step()): evaluated again only where the node
-      // conditions moved it by more than round-off.
+      // iterate (search_along_step()); where the node conditions moved it,
+      // N(du) linearised there, N(du_0) + K_T (du - du_0): the step of
+      // Newton's method with the node conditions as constraints of the
+      // linearisation, without another evaluation of the law (which could
+      // also invert a cell: the contact nodes moved, the cells behind them
+      // not yet).
       if (problem.nonlinear == nullptr)
         problem.internal_force(du, K_du);
       else if (Utilities::MPI::max(moved, comm) >
                1e-14 * std::max(problem.length_scale, du.linfty_norm()))
-        try
-          {
-            problem.internal_force(du, K_du);
-          }
-        catch (const InvertedCell &)
-          {
-            // The move inverts a cell (finite strain: the contact nodes
-            // moved, the cells behind them not yet): N(du) linearised at
-            // the iterate instead, N(du_0) + K_T (du - du_0), which makes
-            // the step that of Newton's method with the node conditions as
-            // constraints of the linearisation.
-            w.sadd(-1., 1., du);
-            K.vmult(rhs, w);
-            K_du += rhs;
-          }
+        {
+          w.sadd(-1., 1., du);
+          K.vmult(rhs, w);
+          K_du += rhs;
+        }
       rhs = problem.load;
       rhs -= K_du;
       if (any_slip)
