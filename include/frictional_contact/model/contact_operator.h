@@ -175,13 +175,21 @@ namespace FrictionalContact
       return any_follows;
     }
 
-    /// f += r_n G_j u_j at a node that follows the configuration, with G_j
-    /// the gradient of the obstacle's outward normal there (t_n = -n).
+    /**
+     * At a node that follows the configuration, with G_j the gradient of
+     * the obstacle's outward normal there (t_n = -n, dt_n = -G_j u_j) and
+     * the tangents carried along with it (dt_k = (t_k . G_j u_j) t_n, as
+     * follow_configuration() turns them): f += r_n G_j u_j - (f_t . G_j
+     * u_j) t_n, f_t = sum_k r_k t_k the tangential reaction. Its parts in
+     * the frame are the change of r_j = T_j^T (f_int - p) with the frame:
+     * the normal part turns into the tangent and the friction force into
+     * the normal.
+     */
     void
-    add_frame_stiffness(const unsigned int j,
-                        const double       r_n,
-                        const Vector      &u,
-                        Vector            &f) const override
+    add_frame_stiffness(const unsigned int    j,
+                        const Tensor<1, dim> &r_j,
+                        const Vector         &u,
+                        Vector               &f) const override
     {
       if (!nodes[j].follows)
         return;
@@ -189,7 +197,11 @@ namespace FrictionalContact
       for (unsigned int c = 0; c < dim; ++c)
         if (!nodes[j].free[c])
           u_j[c] = 0;
-      Tensor<1, dim> force = r_n * (normal_gradients[j] * u_j);
+      const Tensor<1, dim> turn = normal_gradients[j] * u_j;
+      Tensor<1, dim>       tangential = r_j;
+      tangential[0]                   = 0;
+      Tensor<1, dim> force = r_j[0] * turn - (to_cartesian(j, tangential) * turn) *
+                                               nodes[j].into_obstacle;
       for (unsigned int c = 0; c < dim; ++c)
         if (!nodes[j].free[c])
           force[c] = 0;

@@ -93,13 +93,12 @@ namespace FrictionalContact
 
     /**
      * f += the change of the contact force T_j r_j of candidate j, its
-     * normal reaction @p r_n held, as its node moves by @p u: -r_n dt_n/dx
-     * u_j (t_n turns with the surface's curvature; nothing for fixed
-     * frames).
+     * reaction @p r_j (in its frame) held, as its node moves by @p u: the
+     * frame turns with the surface's curvature (nothing for fixed frames).
      */
     virtual void
     add_frame_stiffness(const unsigned int /*j*/,
-                        const double /*r_n*/,
+                        const Tensor<1, dim> & /*r_j*/,
                         const Vector & /*u*/,
                         Vector & /*f*/) const
     {}

@@ -75,7 +75,7 @@ namespace FrictionalContact
      * r_t = mu |r_n| zeta / |zeta| (Q = I - n n^T, the tangential directions
      * across the slip; B is this Robin term, zero in 2D). Where the frames
      * follow the configuration, K has the stiffness of the turning frames
-     * at the nodes in contact, r_n G_j (ContactMap::add_frame_stiffness(),
+     * at the nodes in contact (ContactMap::add_frame_stiffness(),
      * from @p reactions; nullptr for fixed frames). Without slipping nodes
      * the operator is P K P, symmetric.
      */
@@ -126,7 +126,7 @@ namespace FrictionalContact
         if (reactions != nullptr)
           for (unsigned int j = 0; j < contact.n_local(); ++j)
             if (conditions[j] != NodeCondition::none)
-              contact.add_frame_stiffness(j, (*reactions)[j][0], u, force);
+              contact.add_frame_stiffness(j, (*reactions)[j], u, force);
         couple(force);
         add_robin(u, 1., force);
         P.apply(force);
