@@ -175,16 +175,8 @@ namespace FrictionalContact
       return any_follows;
     }
 
-    /**
-     * At a node that follows the configuration, with G_j the gradient of
-     * the obstacle's outward normal there (t_n = -n, dt_n = -G_j u_j) and
-     * the tangents carried along with it (dt_k = (t_k . G_j u_j) t_n, as
-     * follow_configuration() turns them): f += r_n G_j u_j - (f_t . G_j
-     * u_j) t_n, f_t = sum_k r_k t_k the tangential reaction. Its parts in
-     * the frame are the change of r_j = T_j^T (f_int - p) with the frame:
-     * the normal part turns into the tangent and the friction force into
-     * the normal.
-     */
+    /// f += turning_force(j, r_j, u_j) at a node that follows the
+    /// configuration, its fixed components left out.
     void
     add_frame_stiffness(const unsigned int    j,
                         const Tensor<1, dim> &r_j,
@@ -197,15 +189,21 @@ namespace FrictionalContact
       for (unsigned int c = 0; c < dim; ++c)
         if (!nodes[j].free[c])
           u_j[c] = 0;
-      const Tensor<1, dim> turn = normal_gradients[j] * u_j;
-      Tensor<1, dim>       tangential = r_j;
-      tangential[0]                   = 0;
-      Tensor<1, dim> force = r_j[0] * turn - (to_cartesian(j, tangential) * turn) *
-                                               nodes[j].into_obstacle;
+      Tensor<1, dim> force = turning_force(j, r_j, u_j);
       for (unsigned int c = 0; c < dim; ++c)
         if (!nodes[j].free[c])
           force[c] = 0;
       add_nodal_value(j, force, f);
+    }
+
+    Tensor<1, dim>
+    frame_turn(const unsigned int    j,
+               const Tensor<1, dim> &r_j,
+               const Tensor<1, dim> &move) const override
+    {
+      if (!nodes[j].follows)
+        return {};
+      return to_local(j, turning_force(j, r_j, to_cartesian(j, move)));
     }
 
     /**
@@ -486,6 +484,28 @@ namespace FrictionalContact
     describe_boundaries(const BoundaryNames &names) const;
 
   private:
+    /**
+     * At a node that follows the configuration, the change of its contact
+     * force T_j r_j (@p r_j held, in its frame) as it moves by @p move
+     * (Cartesian): with G_j the gradient of the obstacle's outward normal
+     * there (t_n = -n, dt_n = -G_j move) and the tangents carried along
+     * with it (dt_k = (t_k . G_j move) t_n, as follow_configuration() turns
+     * them), r_n G_j move - (f_t . G_j move) t_n, f_t = sum_k r_k t_k the
+     * tangential reaction: the normal part turns into the tangent and the
+     * friction force into the normal.
+     */
+    Tensor<1, dim>
+    turning_force(const unsigned int    j,
+                  const Tensor<1, dim> &r_j,
+                  const Tensor<1, dim> &move) const
+    {
+      const Tensor<1, dim> turn       = normal_gradients[j] * move;
+      Tensor<1, dim>       tangential = r_j;
+      tangential[0]                   = 0;
+      return r_j[0] * turn -
+             (to_cartesian(j, tangential) * turn) * nodes[j].into_obstacle;
+    }
+
     struct Node
     {
       Point<dim> position;

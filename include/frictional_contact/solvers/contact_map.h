@@ -103,6 +103,20 @@ namespace FrictionalContact
                         Vector & /*f*/) const
     {}
 
+    /**
+     * The change of candidate j's reaction @p r_j, in its frame, as its
+     * node moves by @p move (in its frame) and its frame turns with it,
+     * the contact force held: the frame part of add_frame_stiffness(), to
+     * first order (zero for fixed frames).
+     */
+    virtual Tensor<1, dim>
+    frame_turn(const unsigned int /*j*/,
+               const Tensor<1, dim> & /*r_j*/,
+               const Tensor<1, dim> & /*move*/) const
+    {
+      return {};
+    }
+
     /// The largest singular value of T (the paper's sigma_T).
     virtual double
     largest_singular_value() const = 0;

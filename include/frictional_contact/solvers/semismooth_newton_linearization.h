@@ -306,6 +306,7 @@ namespace FrictionalContact
         , r_0(r_0)
         , r_1(r_1)
         , nonlinear_balance(std::move(nonlinear_balance))
+        , frames_follow(problem.contact.frames_follow_configuration())
       {
         balance_a = balance_0.norm_sqr();
         balance_b = balance_0 * balance_1 - balance_a;
@@ -320,10 +321,14 @@ namespace FrictionalContact
         double sum = 0;
         for (unsigned int j = 0; j < c.size(); ++j)
           {
+            const Tensor<1, dim> u_0 = problem.relative_displacement(j, du_0);
             const Tensor<1, dim> u_j =
-              (1 - t) * problem.relative_displacement(j, du_0) +
-              t * problem.relative_displacement(j, du_1);
-            const Tensor<1, dim> r_j   = (1 - t) * r_0[j] + t * r_1[j];
+              (1 - t) * u_0 + t * problem.relative_displacement(j, du_1);
+            Tensor<1, dim> r_j = (1 - t) * r_0[j] + t * r_1[j];
+            // Frames that follow the configuration turn with the node as
+            // the Newton tangent has them turn (to first order).
+            if (frames_follow)
+              r_j += problem.contact.frame_turn(j, r_j, u_j - u_0);
             const double         gap   = problem.gaps[j] - u_j[0];
             const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
             const double mu_j =
@@ -358,6 +363,7 @@ namespace FrictionalContact
       const std::vector<Tensor<1, dim>> &r_1;
       double                             balance_a, balance_b, balance_c;
       const std::function<double(double)> nonlinear_balance;
+      const bool                          frames_follow;
     };
 
 
