@@ -25,7 +25,7 @@ scene() {
 include $source_dir/parameters/example1.prm
 set Output directory = out-$1
 subsection Loading
-  set Number of increments = ${2:-6}
+  set Number of increments = 6
 end
 subsection Linear solver
   set Preconditioner = amg

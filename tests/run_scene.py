@@ -3,8 +3,8 @@
 (1: without mpirun) in the current folder, and checks what it wrote: the
 run must exit with 0, print no NaN or Inf, and, where its header says it
 writes VTU, leave a complete set: the .pvd and every .pvtu and .vtu file
-they name. A run that
-writes no VTU proves nothing about the one that does.
+they name. A run that writes no VTU proves nothing about the one that
+does.
 
 usage: run_scene.py PROGRAM SCENE RANKS [--sanitized]
 

@@ -225,7 +225,7 @@ namespace FrictionalContact
       const MPI_Comm           comm = du.get_mpi_communicator();
       double                   moved = 0;
       if (problem.nonlinear != nullptr)
-        w = du; // the iterate before the move, for an inverted cell below
+        w = du; // the iterate before the move, for the linearisation below
       const bool any_slip = Utilities::MPI::logical_or(
         impose_node_conditions(problem, sets.conditions, du, moved) && friction,
         comm);
