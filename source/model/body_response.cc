@@ -480,7 +480,9 @@ namespace FrictionalContact
         {
           const unsigned int c = cell->active_cell_index();
           const bool b_bar     = materials.of(cell->material_id()).elastic().mean_dilatation;
-          evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
+          // Where every cell is assembled anew, its tangent is wanted now;
+          // otherwise first whether the cell is elastic.
+          evaluate_cell(cell, u_ghosted, !changed_cells_only, scratch, nullptr);
           bool elastic = true;
           for (const MaterialResponse<dim> &r : scratch.responses)
             {
@@ -504,8 +506,6 @@ namespace FrictionalContact
               before = scratch.matrix;
               evaluate_cell(cell, u_ghosted, true, scratch, nullptr);
             }
-          else
-            evaluate_cell(cell, u_ghosted, true, scratch, nullptr);
           cell_force_and_tangent(b_bar, true, scratch);
           element_forces += scratch.force.norm_sqr();
           if (changed_cells_only)
