@@ -359,7 +359,9 @@ def ironing_3d(root):
     body = []
     for r in rows(root, "ironing-3d.csv"):
         three = r["dimension"] == "3"
-        body.append([r["cells_along"], "3D, tool (mortar)" if three else "2D, cylinder (nodes)",
+        die = (f"3D, tool (mortar), geometry {r['tool_geometry'] or 'fixed point'}" if three
+               else "2D, cylinder (nodes)")
+        body.append([r["cells_along"], die,
                      r["ranks"], thousands(r["d"]), r["increments"], r["newton_iterations"],
                      r["geometry_solves"],
                      f"{float(r['largest_drag_difference']):.2%}, "
@@ -376,13 +378,13 @@ def ironing_3d_scale(root):
     body = []
     for r in rows(root, "ironing-3d-scale.csv"):
         factor = float(r["tangent_rebuild_factor"])
-        body.append([r["cells"], r["ranks"], thousands(r["d"]),
+        body.append([r["cells"], r["ranks"], thousands(r["d"]), r["tool_geometry"],
                      f"after {factor:g} x the Krylov iterations" if factor > 0 else "never",
                      r["increments"], r["cuts"], r["newton_iterations"],
                      f"{int(r['krylov_iterations']) / int(r['newton_iterations']):.1f}",
                      r["amg_setups"], r["geometry_solves"], seconds(r["solve_s"]),
                      r["solve_in_elastic_solves"]])
-    return markdown(["cells", "ranks", "d", "AMG built again on the tangent", "increments",
+    return markdown(["cells", "ranks", "d", "the tool's geometry", "AMG built again on the tangent", "increments",
                      "cuts", "Newton steps", "Krylov per Newton step", "AMG set-ups",
                      "geometry solves", "solve", "solve in elastic solves"], body)
 

@@ -6,9 +6,12 @@ cylinder, contact at the nodes), from their statistics files: at every
 time both have, the drag (x force) agrees to DRAG and the press (the 2D y
 force, the 3D z force) to PRESS, both relative to the largest 2D press. The two
 discretisations differ (mortar against nodes, a faceted die against a
-round one): they agree better on finer cells (doc/validation.md).
+round one): they agree better on finer cells (doc/validation.md). With
+--most-newton, the 3D run's Newton steps (its statistics' solver
+iterations) are at most that many in all.
 
 usage: check_ironing_3d.py <2D statistics> <3D statistics> --drag DRAG --press PRESS
+                           [--most-newton N]
 """
 import argparse
 import os
@@ -24,6 +27,8 @@ def main():
     parser.add_argument("solid")
     parser.add_argument("--drag", type=float, required=True)
     parser.add_argument("--press", type=float, required=True)
+    parser.add_argument("--most-newton", type=int,
+                        help="the most Newton steps the 3D run may take in all")
     args = parser.parse_args()
     flat = {round(row["Time"], 9): row for row in read_statistics(args.flat)}
     solid = {round(row["Time"], 9): row for row in read_statistics(args.solid)}
@@ -44,6 +49,12 @@ def main():
         failures.append(f"the drag differs by {drag:.3g}, more than {args.drag:g}")
     if not press <= args.press:
         failures.append(f"the press differs by {press:.3g}, more than {args.press:g}")
+    if args.most_newton is not None:
+        steps = sum(int(row["Contact solver iterations"]) for row in solid.values())
+        print(f"the 3D run took {steps} Newton steps")
+        if not steps <= args.most_newton:
+            failures.append(f"the 3D run took {steps} Newton steps, more than "
+                            f"{args.most_newton}")
     return report(failures)
 
 

@@ -391,15 +391,17 @@ namespace FrictionalContact
         outcome.problem->nonlinear = outcome.response.get();
         if (warm_start)
           outcome.problem->tolerance = warm_start->tolerance;
-        if (contact.follows_configuration())
-          outcome.problem->follow_geometry =
-            [&contact = model.get_contact(),
-             &problem = *outcome.problem,
-             start,
-             obstacle_motion](const TrilinosWrappers::MPI::Vector &du,
-                              std::vector<Tensor<1, dim>>         &r) {
-              take_contact_geometry(contact, problem, start, obstacle_motion, du, r);
-            };
+        if (contact.follows_configuration() || contact.pairs_follow_within_newton())
+          {
+            auto increment = std::make_shared<IncrementGeometry>(IncrementGeometry{
+              body, t_start, t_end, start, body.make_ghosted_vector(), obstacle_motion});
+            increment->start_ghosted = start;
+            outcome.problem->follow_geometry =
+              [&contact = model.get_contact(), &problem = *outcome.problem, increment](
+                const TrilinosWrappers::MPI::Vector &du, std::vector<Tensor<1, dim>> &r) {
+                take_contact_geometry(contact, problem, *increment, du, r);
+              };
+          }
         solve_contact(model, state, start, outcome, record_history, timer, warm_start);
         outcome.problem->follow_geometry = nullptr;
         if (!result.converged)
@@ -539,25 +541,32 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  IncrementSolver<dim>::take_contact_geometry(
-    ContactOperator<dim>                &contact,
-    IncrementalProblem<dim>             &problem,
-    const TrilinosWrappers::MPI::Vector &start,
-    const Tensor<1, dim>                &obstacle_motion,
-    const TrilinosWrappers::MPI::Vector &du,
-    std::vector<Tensor<1, dim>>         &r)
+  IncrementSolver<dim>::take_contact_geometry(ContactOperator<dim>    &contact,
+                                              IncrementalProblem<dim> &problem,
+                                              const IncrementGeometry &increment,
+                                              const TrilinosWrappers::MPI::Vector &du,
+                                              std::vector<Tensor<1, dim>>         &r)
   {
     // The reactions keep their Cartesian direction.
     std::vector<Tensor<1, dim>> forces(r.size());
     for (unsigned int j = 0; j < r.size(); ++j)
       forces[j] = contact.to_cartesian(j, r[j]);
-    TrilinosWrappers::MPI::Vector solved = start;
+    TrilinosWrappers::MPI::Vector solved = increment.start;
     solved += du;
-    contact.follow_configuration(solved);
+    if (contact.follows_configuration())
+      contact.follow_configuration(solved);
+    if (contact.pairs_follow_within_newton())
+      {
+        // du is in w, which is u here (no mortar row reaches a master).
+        TrilinosWrappers::MPI::Vector ghosted = increment.body.make_ghosted_vector();
+        ghosted = solved;
+        contact.update_pairs(increment.body, ghosted, increment.t_start,
+                             increment.t_end, &increment.start_ghosted);
+      }
     for (unsigned int j = 0; j < r.size(); ++j)
       {
-        problem.gaps[j]          = contact.gap_at_start(j, start);
-        problem.obstacle_slip[j] = contact.prescribed_slip(j, obstacle_motion);
+        problem.gaps[j]          = contact.gap_at_start(j, increment.start);
+        problem.obstacle_slip[j] = contact.prescribed_slip(j, increment.obstacle_motion);
         r[j]                     = contact.to_local(j, forces[j]);
       }
   }

@@ -345,6 +345,10 @@ namespace FrictionalContact
           for (const types::material_id id : *side)
             any_pair_follows |= body.get_materials().of(id).elastic().finite_strain;
       }
+    for (MortarInterface<dim> &interface : interfaces)
+      interface.take_tool_frames(pairs_follow_within_newton());
+    if (pairs_follow_within_newton())
+      normal_gradients.assign(nodes.size(), Tensor<2, dim>());
     facing_contact =
       Utilities::MPI::compute_set_union(facing_contact, body.get_mpi_communicator());
     if (has_friction())
@@ -470,21 +474,28 @@ namespace FrictionalContact
           const Tensor<1, dim> into = -obstacle->outward_normal(where);
           normal_gradients[j]       = obstacle->normal_gradient(where);
           nodes[j].into_obstacle = into;
-          if (!tangents.empty())
-            {
-              // The first tangent turned with the normal (continuous, so
-              // that the tangential reactions keep their meaning).
-              Tensor<1, dim> t = tangents[j][0] - (tangents[j][0] * into) * into;
-              if (t.norm() > 1e-3)
-                {
-                  tangents[j][0] = t / t.norm();
-                  if constexpr (dim == 3)
-                    tangents[j][1] = cross_product_3d(-into, tangents[j][0]);
-                }
-              else
-                tangents[j] = tangents_to<dim>(-into);
-            }
+          turn_tangents(j, into);
         }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::turn_tangents(const unsigned int j, const Tensor<1, dim> &into)
+  {
+    if (tangents.empty())
+      return;
+    // The first tangent turned with the normal, the second across both.
+    const Tensor<1, dim> t = tangents[j][0] - (tangents[j][0] * into) * into;
+    if (t.norm() > 1e-3)
+      {
+        tangents[j][0] = t / t.norm();
+        if constexpr (dim == 3)
+          tangents[j][1] = cross_product_3d(-into, tangents[j][0]);
+      }
+    else
+      tangents[j] = tangents_to<dim>(-into);
   }
 
 
@@ -504,6 +515,7 @@ namespace FrictionalContact
     for (const Node &node : nodes)
       previous_normals.push_back(node.into_obstacle);
     pair_gaps.assign(nodes.size(), 0.);
+    pair_normal_lengths.assign(nodes.size(), 1.);
     pair_motions.assign(nodes.size(), Tensor<1, dim>());
     frame_slips.assign(nodes.size(), Tensor<1, dim>());
     if (start == nullptr)
@@ -521,11 +533,14 @@ namespace FrictionalContact
           for (unsigned int c = 0; c < dim; ++c)
             if (!nodes[j].free[c])
               normal[c] = 0;
+          pair_normal_lengths[j] = normal.norm();
           if (normal.norm() > 0)
             normal /= normal.norm();
           nodes[j].into_obstacle = normal;
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
           pair_gaps[j]  = data->gap;
+          if (pairs_follow_within_newton())
+            normal_gradients[j] = data->normal_gradient;
           pair_motions[j] = data->master_motion;
           if (start == nullptr)
             start_normals[j] = normal;
@@ -538,7 +553,11 @@ namespace FrictionalContact
                 offset - turned(start_normals[j], normal, offset);
               frame_slips[j] = carried - (carried * normal) * normal;
             }
-          if (!tangents.empty())
+          // Within the Newton iterates of an increment the tangents turn
+          // with the normal; otherwise they are the normal's own.
+          if (start != nullptr && pairs_follow_within_newton())
+            turn_tangents(j, normal);
+          else if (!tangents.empty())
             tangents[j] = tangents_to<dim>(normal);
           if (previous_gaps.size() == nodes.size())
             {

@@ -47,6 +47,58 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  ContactOperator<dim>::normal_turns(const Vector                &u,
+                                     std::vector<Tensor<1, dim>> &turns) const
+  {
+    turns.assign(nodes.size(), Tensor<1, dim>());
+    const bool pairs_turn = pairs_follow_within_newton();
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const bool pair_turns = pairs_turn && nodes[j].pair >= 0 && pair_normal_lengths[j] > 0;
+        if (!nodes[j].follows && !pair_turns)
+          continue;
+        Tensor<1, dim> u_j = nodal_value(j, u);
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!nodes[j].free[c])
+            u_j[c] = 0;
+        turns[j] = normal_gradients[j] * u_j;
+        if (pair_turns)
+          {
+            // A tool's normal n turns with the node's move along it; t_n is
+            // -P n / |P n|, P leaving out the fixed components.
+            for (unsigned int c = 0; c < dim; ++c)
+              if (!nodes[j].free[c])
+                turns[j][c] = 0;
+            const Tensor<1, dim> &into = nodes[j].into_obstacle;
+            turns[j] = (turns[j] - (turns[j] * into) * into) / pair_normal_lengths[j];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOperator<dim>::add_frame_stiffness(const std::vector<Tensor<1, dim>> &r,
+                                            const Vector                      &u,
+                                            Vector                            &f) const
+  {
+    normal_turns(u, turns_scratch);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (turns_scratch[j].norm_square() > 0)
+        {
+          Tensor<1, dim> force = turning_force(j, r[j], turns_scratch[j]);
+          for (unsigned int c = 0; c < dim; ++c)
+            if (!nodes[j].free[c])
+              force[c] = 0;
+          add_nodal_value(j, force, f);
+        }
+  }
+
+
+
+  template <int dim>
+  void
   ContactOperator<dim>::set_nodal_values(
     const std::vector<Tensor<1, dim>> &values,
     Vector                            &f) const
@@ -255,4 +307,16 @@ namespace FrictionalContact
   ContactOperator<2>::orthonormality_defect() const;
   template double
   ContactOperator<3>::orthonormality_defect() const;
+  template void
+  ContactOperator<2>::normal_turns(const Vector &, std::vector<Tensor<1, 2>> &) const;
+  template void
+  ContactOperator<3>::normal_turns(const Vector &, std::vector<Tensor<1, 3>> &) const;
+  template void
+  ContactOperator<2>::add_frame_stiffness(const std::vector<Tensor<1, 2>> &,
+                                          const Vector &,
+                                          Vector &) const;
+  template void
+  ContactOperator<3>::add_frame_stiffness(const std::vector<Tensor<1, 3>> &,
+                                          const Vector &,
+                                          Vector &) const;
 } // namespace FrictionalContact

@@ -59,16 +59,7 @@ namespace FrictionalContact
   MortarInterface<dim>::outward_normal(const MortarSegments::FaceVertices<dim> &x,
                                        const double orientation)
   {
-    Tensor<1, dim> n;
-    if constexpr (dim == 2)
-      {
-        n[0] = x[1][1] - x[0][1];
-        n[1] = x[0][0] - x[1][0];
-      }
-    else
-      n = cross_product_3d(0.5 * (x[1] - x[0] + x[3] - x[2]),
-                           0.5 * (x[2] - x[0] + x[3] - x[1]));
-    return orientation * n / n.norm();
+    return orientation * MortarSegments::unit_normal<dim>(x);
   }
 
 
@@ -307,6 +298,7 @@ namespace FrictionalContact
       }
     const auto tree = pack_rtree(boxes);
 
+
     // Each face of this rank's cells adds, once, to the rows of its
     // vertices: the face normal at each component dof, the lumped weight and
     // the row of M at the x dof (for a tool, its sums). A hanging vertex has
@@ -327,8 +319,19 @@ namespace FrictionalContact
     lumped_sum.reinit(owned, relevant, comm, true);
     RigidRows rigid;
     if (tool != nullptr)
-      for (Vector *v : {&rigid.weight, &rigid.point, &rigid.motion})
+      for (Vector *v : rigid_sums(rigid))
         v->reinit(owned, relevant, comm, true);
+    // With the tool's frames: its vertex normals and each face's gradient
+    // of the normal field they interpolate.
+    std::vector<std::array<Tensor<1, dim>, n_face_vertices>> tool_normals;
+    std::vector<Tensor<2, dim>>                              tool_gradients;
+    if (tool_frames)
+      {
+        tool_normals = tool->vertex_normals_at(t_end);
+        for (unsigned int m = 0; m < masters.size(); ++m)
+          tool_gradients.push_back(
+            MortarSegments::normal_gradient<dim>(masters[m].first, tool_normals[m]));
+      }
     std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> M_entries;
     for (const Face &face : slave_faces)
       if (face.owned_cell)
@@ -357,7 +360,22 @@ namespace FrictionalContact
               const double orientation = master != nullptr ? master->orientation : 1.;
               if (outward_normal(y, orientation) * normal >= 0)
                 continue; // not facing the slave
-              const Table<2, double> M = MortarSegments::face_integrals<dim>(x, normal, y);
+              // Projected along the slave's normal, or with the tool's
+              // frames along the tool's, as a distance to it is measured;
+              // then a tool face's part fades from whole at 30 degrees from
+              // facing the slave face to none at 60 (further, its projection
+              // would land far from it; a sudden cut made the geometry jump).
+              const double facing = -(outward_normal(y, orientation) * normal);
+              const double fade =
+                tool_frames ? std::clamp((facing - 0.5) / (std::sqrt(0.75) - 0.5), 0., 1.) : 1.;
+              if (fade == 0)
+                continue;
+              Table<2, double> M = MortarSegments::face_integrals<dim>(
+                x, tool_frames ? outward_normal(y, 1.) : normal, y);
+              if (fade < 1)
+                for (unsigned int a = 0; a < n_face_vertices; ++a)
+                  for (unsigned int b = 0; b < n_face_vertices; ++b)
+                    M(a, b) *= fade;
               for (unsigned int a = 0; a < n_face_vertices; ++a)
                 for (unsigned int b = 0; b < n_face_vertices; ++b)
                   if (M(a, b) == 0)
@@ -376,6 +394,13 @@ namespace FrictionalContact
                         to_parents(face.dofs[a][c], [&](const auto dof, const double w) {
                           rigid.point[dof] += w * M(a, b) * y[b][c];
                           rigid.motion[dof] += w * M(a, b) * motion[c];
+                          if (tool_frames)
+                            {
+                              rigid.normal[dof] += w * M(a, b) * tool_normals[m][b][c];
+                              for (unsigned int k = 0; k < dim; ++k)
+                                rigid.curvature[k][dof] +=
+                                  w * M(a, b) * tool_gradients[m][k][c];
+                            }
                         });
                     }
             }
@@ -384,13 +409,29 @@ namespace FrictionalContact
     lumped_sum.compress(VectorOperation::add);
     if (tool != nullptr)
       {
-        for (Vector *v : {&rigid.weight, &rigid.point, &rigid.motion})
+        for (Vector *v : rigid_sums(rigid))
           v->compress(VectorOperation::add);
         finish_rigid_rows(normal_sum, lumped_sum, rigid, gap_displacement);
       }
     else
       finish_rows(normal_sum, lumped_sum, M_entries, master_vertex,
                   gap_displacement, relevant, comm);
+  }
+
+
+
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::Vector *>
+  MortarInterface<dim>::rigid_sums(RigidRows &rigid) const
+  {
+    std::vector<Vector *> sums = {&rigid.weight, &rigid.point, &rigid.motion};
+    if (tool_frames)
+      {
+        sums.push_back(&rigid.normal);
+        for (Vector &row : rigid.curvature)
+          sums.push_back(&row);
+      }
+    return sums;
   }
 
 
@@ -501,6 +542,30 @@ namespace FrictionalContact
           {
             mean_point[c]         = rigid.point[dofs[c]] / node.weight;
             node.master_motion[c] = rigid.motion[dofs[c]] / node.weight;
+          }
+        if (tool_frames)
+          {
+            // n = N / |N|, so dn = (I - n n^T) dN / |N|.
+            Tensor<1, dim> tool_normal;
+            Tensor<2, dim> gradient;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                tool_normal[c] = rigid.normal[dofs[c]] / node.weight;
+                for (unsigned int k = 0; k < dim; ++k)
+                  gradient[k][c] = rigid.curvature[k][dofs[c]] / node.weight;
+              }
+            const double length = tool_normal.norm();
+            tool_normal /= length;
+            node.normal = -tool_normal;
+            // The tool's shape operator: its tangential part, symmetric
+            // (as a smooth surface's is; the interpolated normals' is only
+            // nearly), so that a Newton system without slip stays one for
+            // CG.
+            const Tensor<2, dim> across =
+              Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+              outer_product(tool_normal, tool_normal);
+            node.normal_gradient =
+              Tensor<2, dim>(symmetrize(across * gradient * across)) / length;
           }
         node.gap    = node.normal * (mean_point - position);
         node.offset = mean_point - node.master_motion - position;

@@ -166,8 +166,9 @@ namespace FrictionalContact
         Table<2, double>   M(2, 2);
         const Tensor<1, 2> edge   = slave[1] - slave[0];
         const double       length = edge.norm();
+        // Where the line through y along the normal meets the slave's.
         const auto slave_parameter = [&](const Point<2> &y) {
-          return (y - slave[0]) * edge / (length * length);
+          return cross_2d(y - slave[0], normal) / cross_2d(edge, normal);
         };
         const double s0 = slave_parameter(master[0]), s1 = slave_parameter(master[1]);
         const double low = std::max(0., std::min(s0, s1));
@@ -326,6 +327,61 @@ namespace FrictionalContact
         return integrals_3d(slave, slave_normal, master);
     }
 
+    template <int dim>
+    Tensor<1, dim>
+    unit_normal(const FaceVertices<dim> &x)
+    {
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          n[0] = x[1][1] - x[0][1];
+          n[1] = x[0][0] - x[1][0];
+        }
+      else
+        n = cross_product_3d(0.5 * (x[1] - x[0] + x[3] - x[2]),
+                             0.5 * (x[2] - x[0] + x[3] - x[1]));
+      return n / n.norm();
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    normal_gradient(const FaceVertices<dim>                                             &x,
+                    const std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell> &normals)
+    {
+      // The surface gradient of each shape function at the centre,
+      // J (J^T J)^-1 grad_xi N with J the face's tangents there.
+      constexpr unsigned int n_vertices = GeometryInfo<dim - 1>::vertices_per_cell;
+      std::array<Tensor<1, dim>, n_vertices> gradients;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> a = x[1] - x[0];
+          gradients[0]           = -a / a.norm_square();
+          gradients[1]           = a / a.norm_square();
+        }
+      else
+        {
+          const Tensor<1, dim> a   = 0.5 * (x[1] - x[0] + x[3] - x[2]);
+          const Tensor<1, dim> b   = 0.5 * (x[2] - x[0] + x[3] - x[1]);
+          const double         aa  = a * a, ab = a * b, bb = b * b;
+          const double         det = aa * bb - ab * ab;
+          const double d_xi[4]  = {-0.5, 0.5, -0.5, 0.5};
+          const double d_eta[4] = {-0.5, -0.5, 0.5, 0.5};
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            {
+              // (J^T J)^-1 (d_xi, d_eta), then J times it.
+              const double p = (bb * d_xi[v] - ab * d_eta[v]) / det;
+              const double q = (aa * d_eta[v] - ab * d_xi[v]) / det;
+              gradients[v]   = p * a + q * b;
+            }
+        }
+      Tensor<2, dim> G;
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        G += outer_product(normals[v], gradients[v]);
+      return G;
+    }
+
     template std::array<double, 2>
     shape_values<2>(const Point<1> &);
     template std::array<double, 4>
@@ -342,5 +398,13 @@ namespace FrictionalContact
     face_integrals<3>(const FaceVertices<3> &,
                       const Tensor<1, 3> &,
                       const FaceVertices<3> &);
+    template Tensor<1, 2>
+    unit_normal<2>(const FaceVertices<2> &);
+    template Tensor<1, 3>
+    unit_normal<3>(const FaceVertices<3> &);
+    template Tensor<2, 2>
+    normal_gradient<2>(const FaceVertices<2> &, const std::array<Tensor<1, 2>, 2> &);
+    template Tensor<2, 3>
+    normal_gradient<3>(const FaceVertices<3> &, const std::array<Tensor<1, 3>, 4> &);
   } // namespace MortarSegments
 } // namespace FrictionalContact

@@ -99,6 +99,20 @@ namespace FrictionalContact
                       Patterns::Anything(),
                       "The point c of the file's coordinates about which the "
                       "tool turns; it moves with the translation.");
+    prm.declare_entry(
+      "Geometry at finite strain",
+      "fixed point",
+      Patterns::Selection("fixed point|every Newton iterate"),
+      "How the pairs with the tool follow a body at finite strain within "
+      "an increment. fixed point: the slave surface's normals, the "
+      "increment solved again with the geometry where it ended until it "
+      "settles (<Contact/Pair geometry>). every Newton iterate: the tool's "
+      "own normals (its vertex normals, integrated as its points are), the "
+      "gaps measured along them, the geometry taken at every Newton iterate "
+      "and the tool's curvature in the tangent, as against an obstacle: "
+      "fewer Newton steps, one solve per increment (doc/performance.md, "
+      "\"The 3D ironing at scale\"). Pairs whose slave body is at small "
+      "strain take their geometry once per increment either way.");
     if (dim == 3)
       prm.declare_entry("Rotation axis",
                         "0, 0, 1",
@@ -134,6 +148,7 @@ namespace FrictionalContact
                                            prm.get("Rotation angle"),
                                            1);
     const bool reverse = prm.get_bool("Reverse orientation");
+    newton_geometry    = prm.get("Geometry at finite strain") == "every Newton iterate";
     prm.leave_subsection();
     if (name.empty())
       return;
@@ -387,6 +402,37 @@ namespace FrictionalContact
         for (unsigned int v = 0; v < face.size(); ++v)
           y[v] = moved[face[v]];
         result.push_back(y);
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>>
+  RigidTool<dim>::vertex_normals_at(const double t) const
+  {
+    // The faces' normals where the file puts them, summed at the vertices,
+    // then turned by the rotation R(t) (a translation does not turn them).
+    std::vector<Tensor<1, dim>> sums(vertices.size());
+    for (const auto &face : faces)
+      {
+        MortarSegments::FaceVertices<dim> x;
+        for (unsigned int v = 0; v < face.size(); ++v)
+          x[v] = vertices[face[v]];
+        const Tensor<1, dim> normal = MortarSegments::unit_normal<dim>(x);
+        for (const unsigned int v : face)
+          sums[v] += normal;
+      }
+    const double theta = angle->value(t);
+    std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>> result;
+    result.reserve(faces.size());
+    for (const auto &face : faces)
+      {
+        std::array<Tensor<1, dim>, dim == 2 ? 2 : 4> normals;
+        for (unsigned int v = 0; v < face.size(); ++v)
+          normals[v] = rotate<dim>(sums[face[v]] / sums[face[v]].norm(), axis, theta);
+        result.push_back(normals);
       }
     return result;
   }

@@ -192,18 +192,30 @@ namespace FrictionalContact
                   TimerOutput                         &timer,
                   const WarmStart<dim>                *warm_start);
 
+    /// Where an increment's contact geometry is taken again at each Newton
+    /// iterate: its span, and the configuration it starts from.
+    struct IncrementGeometry
+    {
+      const ElasticBody<dim>       &body;
+      double                        t_start, t_end;
+      TrilinosWrappers::MPI::Vector start;
+      /// start with ghost entries (for the pairs' geometry).
+      TrilinosWrappers::MPI::Vector start_ghosted;
+      Tensor<1, dim>                obstacle_motion;
+    };
+
     /**
-     * Takes the obstacle's gaps and frames of @p contact at start + @p du
-     * into @p problem (gaps linearised there, and the tangential motion
-     * @p obstacle_motion in the new frames) and expresses @p r in them:
-     * the Newton method calls it at each iterate (finite strain against
-     * an obstacle). Collective.
+     * Takes the gaps and frames of @p contact at start + @p du into
+     * @p problem and expresses @p r in the new frames: the obstacle's of the
+     * candidates that follow the configuration (gaps linearised there, the
+     * tangential motion obstacle_motion in the new frames), and the pairs'
+     * geometry where it follows within Newton (pairs_follow_within_newton()).
+     * The Newton method calls it at each iterate. Collective.
      */
     static void
     take_contact_geometry(ContactOperator<dim>                &contact,
                           IncrementalProblem<dim>             &problem,
-                          const TrilinosWrappers::MPI::Vector &start,
-                          const Tensor<1, dim>                &obstacle_motion,
+                          const IncrementGeometry             &increment,
                           const TrilinosWrappers::MPI::Vector &du,
                           std::vector<Tensor<1, dim>>         &r);
 

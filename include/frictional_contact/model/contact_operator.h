@@ -13,6 +13,7 @@
 #include <frictional_contact/base/time_function.h>
 #include <frictional_contact/obstacle/interface.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -104,6 +105,24 @@ namespace FrictionalContact
     }
 
     /**
+     * Whether the pairs' geometry is taken again at every Newton iterate
+     * (update_pairs() with the increment's start), in the tool's frames:
+     * when a body at finite strain is on a pair, every pair's master is the
+     * rigid tool, and <Rigid tool/Geometry at finite strain> asks for it.
+     * The mortar rows then reach no unknown of a master (MortarBasis is
+     * the identity), so the basis the increment was solved in stays valid
+     * as the geometry moves.
+     */
+    bool
+    pairs_follow_within_newton() const
+    {
+      return any_pair_follows && tool->geometry_at_every_newton_iterate() &&
+             std::all_of(interfaces.begin(), interfaces.end(), [](const auto &interface) {
+               return interface.has_rigid_master();
+             });
+    }
+
+    /**
      * The prescribed tangential motion over the increment of what node j
      * touches, in its frame (component 0 is zero: the gap has the normal
      * part): for a candidate facing the obstacle, the obstacle's
@@ -172,38 +191,32 @@ namespace FrictionalContact
     bool
     frames_follow_configuration() const override
     {
-      return any_follows;
+      return any_follows || pairs_follow_within_newton();
     }
 
-    /// f += turning_force(j, r_j, u_j) at a node that follows the
-    /// configuration, its fixed components left out.
+    /**
+     * The turn of what each candidate touches, its outward normal, as the
+     * configuration moves by @p u (to first order; fixed components left
+     * out): the curvature of the obstacle, or of a pair's rigid tool where
+     * the pairs' geometry follows within Newton, times the node's move;
+     * zero elsewhere.
+     */
     void
-    add_frame_stiffness(const unsigned int    j,
-                        const Tensor<1, dim> &r_j,
-                        const Vector         &u,
-                        Vector               &f) const override
-    {
-      if (!nodes[j].follows)
-        return;
-      Tensor<1, dim> u_j = nodal_value(j, u);
-      for (unsigned int c = 0; c < dim; ++c)
-        if (!nodes[j].free[c])
-          u_j[c] = 0;
-      Tensor<1, dim> force = turning_force(j, r_j, u_j);
-      for (unsigned int c = 0; c < dim; ++c)
-        if (!nodes[j].free[c])
-          force[c] = 0;
-      add_nodal_value(j, force, f);
-    }
+    normal_turns(const Vector &u, std::vector<Tensor<1, dim>> &turns) const override;
+
+    /// f += turning_force(j, r_j, turn_j) at every candidate, for the
+    /// turns of @p u (normal_turns()), fixed components left out.
+    void
+    add_frame_stiffness(const std::vector<Tensor<1, dim>> &r,
+                        const Vector                      &u,
+                        Vector                            &f) const override;
 
     Tensor<1, dim>
     frame_turn(const unsigned int    j,
                const Tensor<1, dim> &r_j,
-               const Tensor<1, dim> &move) const override
+               const Tensor<1, dim> &turn) const override
     {
-      if (!nodes[j].follows)
-        return {};
-      return to_local(j, turning_force(j, r_j, to_cartesian(j, move)));
+      return to_local(j, turning_force(j, r_j, turn));
     }
 
     /**
@@ -485,26 +498,31 @@ namespace FrictionalContact
 
   private:
     /**
-     * At a node that follows the configuration, the change of its contact
-     * force T_j r_j (@p r_j held, in its frame) as it moves by @p move
-     * (Cartesian): with G_j the gradient of the obstacle's outward normal
-     * there (t_n = -n, dt_n = -G_j move) and the tangents carried along
-     * with it (dt_k = (t_k . G_j move) t_n, as follow_configuration() turns
-     * them), r_n G_j move - (f_t . G_j move) t_n, f_t = sum_k r_k t_k the
-     * tangential reaction: the normal part turns into the tangent and the
-     * friction force into the normal.
+     * At a node whose frame turns, the change of its contact force T_j r_j
+     * (@p r_j held, in its frame) as the outward normal n of what it
+     * touches turns by @p turn (Cartesian; t_n = -n, so dt_n = -turn; for
+     * an obstacle turn = G_j move, G_j the gradient of its outward normal)
+     * with the tangents carried along (dt_k = (t_k . turn) t_n, the least
+     * rotation, as turn_tangents() turns them): r_n turn - (f_t . turn)
+     * t_n, f_t = sum_k r_k t_k the tangential reaction: the normal part
+     * turns into the tangent and the friction force into the normal.
      */
     Tensor<1, dim>
     turning_force(const unsigned int    j,
                   const Tensor<1, dim> &r_j,
-                  const Tensor<1, dim> &move) const
+                  const Tensor<1, dim> &turn) const
     {
-      const Tensor<1, dim> turn       = normal_gradients[j] * move;
-      Tensor<1, dim>       tangential = r_j;
-      tangential[0]                   = 0;
+      Tensor<1, dim> tangential = r_j;
+      tangential[0]             = 0;
       return r_j[0] * turn -
              (to_cartesian(j, tangential) * turn) * nodes[j].into_obstacle;
     }
+
+    /// Turns candidate j's tangents with its normal, now @p into, by the
+    /// least rotation (continuous, so that the tangential reactions keep
+    /// their meaning).
+    void
+    turn_tangents(const unsigned int j, const Tensor<1, dim> &into);
 
     struct Node
     {
@@ -574,8 +592,15 @@ namespace FrictionalContact
     /// displacement of the last follow_configuration() (0 elsewhere).
     std::vector<double>                          followed_gaps;
     std::vector<Tensor<1, dim>>                  followed_displacements;
-    /// The gradient of the obstacle's outward normal there.
+    /// The gradient of the outward normal of what the node touches there
+    /// (the obstacle's, or the tool's where the pairs follow within Newton).
     std::vector<Tensor<2, dim>>                  normal_gradients;
+    /// For each pair's slave node, the length of its unit normal with the
+    /// fixed components left out (1 where none is fixed): the scale of its
+    /// frame's turn.
+    std::vector<double>                          pair_normal_lengths;
+    /// The turns of add_frame_stiffness().
+    mutable std::vector<Tensor<1, dim>>          turns_scratch;
     bool                                         any_follows = false;
     bool                                         any_pair_follows = false;
     PairChange                                   pair_change;

@@ -64,6 +64,21 @@ namespace FrictionalContact
            const double            t_end,
            const Vector           *gaps_at = nullptr);
 
+    /**
+     * Whether a rigid master gives the slave nodes their frames: the
+     * normal is then the tool's own (its vertex normals integrated against
+     * the node's dual function, as its points are) instead of the slave
+     * surface's, so that the gap is measured as a distance to the tool
+     * and turns with the tool's curvature as the node slides, as against
+     * an obstacle (for a body at finite strain, whose geometry is taken at
+     * every Newton iterate).
+     */
+    void
+    take_tool_frames(const bool take)
+    {
+      tool_frames = take && tool != nullptr;
+    }
+
     /// Whether the master is a rigid tool.
     bool
     has_rigid_master() const
@@ -74,8 +89,13 @@ namespace FrictionalContact
     /// The mortar data of a slave vertex.
     struct SlaveNode
     {
-      /// The averaged outward unit normal of the slave surface.
+      /// The averaged outward unit normal of the slave surface; with the
+      /// tool's frames (take_tool_frames()), minus the tool's normal at
+      /// the node's mortar point.
       Tensor<1, dim> normal;
+      /// With the tool's frames: the gradient of the tool's outward unit
+      /// normal at the mortar point, which moves with the node (dn = G du).
+      Tensor<2, dim> normal_gradient;
       /// D_jj: the integral of the node's dual function over the part of
       /// the slave surface the master covers (0 if none).
       double weight = 0;
@@ -202,7 +222,15 @@ namespace FrictionalContact
     struct RigidRows
     {
       Vector weight, point, motion;
+      /// With the tool's frames: sum_l M_jl n_l of the tool's vertex
+      /// normals, and of the rows k of its faces' normal gradients.
+      Vector                     normal;
+      std::array<Vector, dim>    curvature;
     };
+
+    /// The sums of @p rigid that this interface makes.
+    std::vector<Vector *>
+    rigid_sums(RigidRows &rigid) const;
 
     /// Resets the data of slave vertex @p dof to its normal and full
     /// weight (from the sums over the faces); returns its position for the
@@ -241,6 +269,7 @@ namespace FrictionalContact
 
     types::boundary_id    slave_id, master_id;
     const RigidTool<dim> *tool;
+    bool                  tool_frames = false;
     std::vector<Face>  slave_faces;
     /// The master faces of this rank's cells, and of all ranks (the dofs
     /// and orientations are gathered at setup, the positions at update).

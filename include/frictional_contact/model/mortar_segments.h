@@ -52,6 +52,25 @@ namespace FrictionalContact
     Table<2, double>
     dual_coefficients(const FaceVertices<dim> &slave);
 
+    /// The unit normal of a face at its centre, (x_1 - x_0) turned
+    /// clockwise in 2D, a x b for the mean edge vectors a (along the first
+    /// face coordinate) and b in 3D: the side it points to follows the
+    /// vertex order.
+    template <int dim>
+    Tensor<1, dim>
+    unit_normal(const FaceVertices<dim> &x);
+
+    /**
+     * The gradient at the face's centre of the normal field interpolated
+     * (Q1) from the unit @p normals at its vertices, along the face: G with
+     * dn = G dx for a move dx of the point where it is taken (the surface's
+     * curvature for the normals of a smooth surface).
+     */
+    template <int dim>
+    Tensor<2, dim>
+    normal_gradient(const FaceVertices<dim>                                             &x,
+                    const std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell> &normals);
+
     /// The Q1 shape values of a face at the face coordinates @p xi.
     template <int dim>
     std::array<double, GeometryInfo<dim - 1>::vertices_per_cell>

@@ -53,9 +53,24 @@ namespace FrictionalContact
       return name;
     }
 
+    /// Whether the pairs with the tool take their geometry, in the tool's
+    /// frames, at every Newton iterate (<Geometry at finite strain>).
+    bool
+    geometry_at_every_newton_iterate() const
+    {
+      return newton_geometry;
+    }
+
     /// The tool's faces at time @p t.
     std::vector<MortarSegments::FaceVertices<dim>>
     faces_at(const double t) const;
+
+    /// The unit normals at the vertices of each face at time @p t (in the
+    /// order of faces_at()): at each vertex the mean of the outward
+    /// normals of the faces around it, a normal field that turns smoothly
+    /// over the faceted surface.
+    std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>>
+    vertex_normals_at(const double t) const;
 
     /// Number of faces (a triangle of the file counts as three).
     std::size_t
@@ -100,5 +115,6 @@ namespace FrictionalContact
     Tensor<1, dim>                                        axis;
     std::unique_ptr<TimeFunction>                         translation;
     std::unique_ptr<TimeFunction>                         angle;
+    bool                                                  newton_geometry = false;
   };
 } // namespace FrictionalContact

@@ -92,27 +92,37 @@ namespace FrictionalContact
     }
 
     /**
-     * f += the change of the contact force T_j r_j of candidate j, its
-     * reaction @p r_j (in its frame) held, as its node moves by @p u: the
-     * frame turns with the surface's curvature (nothing for fixed frames).
+     * The turn of each candidate's frame as the configuration moves by
+     * @p u, to first order: the change of the outward normal of what it
+     * touches (t_n turns by minus it), Cartesian; zero for fixed frames.
      */
     virtual void
-    add_frame_stiffness(const unsigned int /*j*/,
-                        const Tensor<1, dim> & /*r_j*/,
+    normal_turns(const Vector & /*u*/, std::vector<Tensor<1, dim>> &turns) const
+    {
+      turns.assign(n_local(), Tensor<1, dim>());
+    }
+
+    /**
+     * f += the change of the contact forces T_j r_j, the reactions @p r
+     * (in their frames) held, as the configuration moves by @p u and the
+     * frames turn with it (normal_turns(); nothing for fixed frames).
+     * Collective.
+     */
+    virtual void
+    add_frame_stiffness(const std::vector<Tensor<1, dim>> & /*r*/,
                         const Vector & /*u*/,
                         Vector & /*f*/) const
     {}
 
     /**
      * The change of candidate j's reaction @p r_j, in its frame, as its
-     * node moves by @p move (in its frame) and its frame turns with it,
-     * the contact force held: the frame part of add_frame_stiffness(), to
-     * first order (zero for fixed frames).
+     * frame turns by @p turn (a turn of normal_turns()), the contact force
+     * held: the part of add_frame_stiffness() at j (zero for fixed frames).
      */
     virtual Tensor<1, dim>
     frame_turn(const unsigned int /*j*/,
                const Tensor<1, dim> & /*r_j*/,
-               const Tensor<1, dim> & /*move*/) const
+               const Tensor<1, dim> & /*turn*/) const
     {
       return {};
     }

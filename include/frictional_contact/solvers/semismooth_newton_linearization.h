@@ -100,8 +100,17 @@ namespace FrictionalContact
         , robin(robin)
         , friction(friction)
         , stabilization(stabilization)
-        , reactions(reactions)
-      {}
+        , frames_turn(reactions != nullptr)
+      {
+        // The reactions that act: none at a free node.
+        if (frames_turn)
+          {
+            acting = *reactions;
+            for (unsigned int j = 0; j < acting.size(); ++j)
+              if (conditions[j] == NodeCondition::none)
+                acting[j] = Tensor<1, dim>();
+          }
+      }
 
       void
       vmult(Vector &dst, const Vector &src) const
@@ -123,10 +132,8 @@ namespace FrictionalContact
             for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
               f[i] += S[i] * x[i];
           }
-        if (reactions != nullptr)
-          for (unsigned int j = 0; j < contact.n_local(); ++j)
-            if (conditions[j] != NodeCondition::none)
-              contact.add_frame_stiffness(j, (*reactions)[j], u, force);
+        if (frames_turn)
+          contact.add_frame_stiffness(acting, u, force);
         couple(force);
         add_robin(u, 1., force);
         P.apply(force);
@@ -177,9 +184,10 @@ namespace FrictionalContact
       const bool                            friction;
       /// The diagonal of S (empty: none).
       const Vector                         &stabilization;
-      /// The reactions of the iterate where the frames follow the
-      /// configuration (nullptr: fixed frames).
-      const std::vector<Tensor<1, dim>>    *reactions;
+      /// Whether the frames follow the configuration, and then the
+      /// reactions of the iterate that act (zero at a free node).
+      const bool                            frames_turn;
+      std::vector<Tensor<1, dim>>           acting;
     };
 
     /// The node conditions of an active-set step and what goes with them.
@@ -306,8 +314,15 @@ namespace FrictionalContact
         , r_0(r_0)
         , r_1(r_1)
         , nonlinear_balance(std::move(nonlinear_balance))
-        , frames_follow(problem.contact.frames_follow_configuration())
       {
+        // Frames that follow the configuration turn along the step as the
+        // Newton tangent has them turn (to first order).
+        if (problem.contact.frames_follow_configuration())
+          {
+            scratch = du_1;
+            scratch -= du_0;
+            problem.contact.normal_turns(scratch, step_turns);
+          }
         balance_a = balance_0.norm_sqr();
         balance_b = balance_0 * balance_1 - balance_a;
         scratch   = balance_1;
@@ -325,10 +340,8 @@ namespace FrictionalContact
             const Tensor<1, dim> u_j =
               (1 - t) * u_0 + t * problem.relative_displacement(j, du_1);
             Tensor<1, dim> r_j = (1 - t) * r_0[j] + t * r_1[j];
-            // Frames that follow the configuration turn with the node as
-            // the Newton tangent has them turn (to first order).
-            if (frames_follow)
-              r_j += problem.contact.frame_turn(j, r_j, u_j - u_0);
+            if (!step_turns.empty())
+              r_j += problem.contact.frame_turn(j, r_j, t * step_turns[j]);
             const double         gap   = problem.gaps[j] - u_j[0];
             const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
             const double mu_j =
@@ -363,7 +376,8 @@ namespace FrictionalContact
       const std::vector<Tensor<1, dim>> &r_1;
       double                             balance_a, balance_b, balance_c;
       const std::function<double(double)> nonlinear_balance;
-      const bool                          frames_follow;
+      /// The turn of each frame per unit step (empty for fixed frames).
+      std::vector<Tensor<1, dim>>         step_turns;
     };
 
 
