@@ -393,9 +393,13 @@ namespace FrictionalContact
           outcome.problem->tolerance = warm_start->tolerance;
         if (contact.follows_configuration() || contact.pairs_follow_within_newton())
           {
-            auto increment = std::make_shared<IncrementGeometry>(IncrementGeometry{
-              body, t_start, t_end, start, body.make_ghosted_vector(), obstacle_motion});
-            increment->start_ghosted = start;
+            auto increment = std::make_shared<IncrementGeometry>(
+              IncrementGeometry{body, t_start, t_end, start, {}, obstacle_motion});
+            if (contact.pairs_follow_within_newton())
+              {
+                increment->start_ghosted = body.make_ghosted_vector();
+                increment->start_ghosted = start;
+              }
             outcome.problem->follow_geometry =
               [&contact = model.get_contact(), &problem = *outcome.problem, increment](
                 const TrilinosWrappers::MPI::Vector &du, std::vector<Tensor<1, dim>> &r) {

@@ -199,7 +199,8 @@ namespace FrictionalContact
       const ElasticBody<dim>       &body;
       double                        t_start, t_end;
       TrilinosWrappers::MPI::Vector start;
-      /// start with ghost entries (for the pairs' geometry).
+      /// start with ghost entries, for the pairs' geometry (empty where
+      /// the pairs do not follow within Newton).
       TrilinosWrappers::MPI::Vector start_ghosted;
       Tensor<1, dim>                obstacle_motion;
     };
