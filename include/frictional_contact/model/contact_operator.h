@@ -114,13 +114,7 @@ namespace FrictionalContact
      * as the geometry moves.
      */
     bool
-    pairs_follow_within_newton() const
-    {
-      return any_pair_follows && tool->geometry_at_every_newton_iterate() &&
-             std::all_of(interfaces.begin(), interfaces.end(), [](const auto &interface) {
-               return interface.has_rigid_master();
-             });
-    }
+    pairs_follow_within_newton() const;
 
     /**
      * The prescribed tangential motion over the increment of what node j
@@ -392,16 +386,7 @@ namespace FrictionalContact
     /// The bodies candidate j holds where it is in contact: its own, and
     /// for a pair's slave node the master's bodies.
     std::set<types::material_id>
-    bodies_held_by(const unsigned int j) const
-    {
-      std::set<types::material_id> held = {body_ids[nodes[j].body]};
-      if (nodes[j].pair >= 0)
-        {
-          const auto &masters = interfaces[nodes[j].pair].master_bodies();
-          held.insert(masters.begin(), masters.end());
-        }
-      return held;
-    }
+    bodies_held_by(const unsigned int j) const;
 
     /// Whether candidate j is a slave node of a pair of two bodies (not
     /// facing the obstacle or a tool): its force acts between the bodies
