@@ -470,6 +470,7 @@ namespace FrictionalContact
         tangent_at.reinit(u_ghosted);
         matrix = 0;
       }
+    positions.update(dof_handler, constraints, matrix);
     CellScratch        scratch(dof_handler.get_fe());
     FullMatrix<double> before(scratch.matrix.m(), scratch.matrix.n());
     force = 0;
@@ -510,8 +511,16 @@ namespace FrictionalContact
           element_forces += scratch.force.norm_sqr();
           if (changed_cells_only)
             scratch.matrix.add(-1., before);
-          constraints.distribute_local_to_global(
-            scratch.matrix, scratch.force, scratch.dof_indices, matrix, force);
+          if (positions.has(c))
+            {
+              positions.add(c, scratch.matrix);
+              constraints.distribute_local_to_global(scratch.force,
+                                                     scratch.dof_indices,
+                                                     force);
+            }
+          else
+            constraints.distribute_local_to_global(
+              scratch.matrix, scratch.force, scratch.dof_indices, matrix, force);
           elastic_cells[c] = elastic;
         }
     force.compress(VectorOperation::add);

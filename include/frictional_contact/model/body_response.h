@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/model/cell_matrix_positions.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/quadrature_history.h>
@@ -197,6 +198,9 @@ namespace FrictionalContact
     /// cell index).
     Vector                     tangent_at;
     std::vector<unsigned char> elastic_cells;
+    /// Where update_tangent() adds the cell matrices that need no
+    /// constraint.
+    CellMatrixPositions<dim> positions;
     /// See element_force_norm().
     mutable double element_force_size = 0;
   };
