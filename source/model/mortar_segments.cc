@@ -57,19 +57,16 @@ namespace FrictionalContact
           {
             const Tensor<1, 3> residual =
               face_point<3>(v, xi) + alpha * n - X;
-            FullMatrix<double> J(3, 3);
+            // The Jacobian's columns: the face's tangents and n.
+            Tensor<2, 3>       J;
             const Tensor<1, 3> t0 = face_tangent(v, xi, 0), t1 = face_tangent(v, xi, 1);
             for (unsigned int c = 0; c < 3; ++c)
               {
-                J(c, 0) = t0[c];
-                J(c, 1) = t1[c];
-                J(c, 2) = n[c];
+                J[c][0] = t0[c];
+                J[c][1] = t1[c];
+                J[c][2] = n[c];
               }
-            J.gauss_jordan();
-            double step[3] = {0, 0, 0};
-            for (unsigned int r = 0; r < 3; ++r)
-              for (unsigned int c = 0; c < 3; ++c)
-                step[r] += J(r, c) * residual[c];
+            const Tensor<1, 3> step = invert(J) * residual;
             xi[0] -= step[0];
             xi[1] -= step[1];
             alpha -= step[2];

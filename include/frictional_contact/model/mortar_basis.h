@@ -8,6 +8,7 @@
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
+#include <memory>
 #include <vector>
 
 namespace FrictionalContact
@@ -39,7 +40,9 @@ namespace FrictionalContact
     const StiffnessOperator &
     stiffness() const
     {
-      return has_tangent ? tangent_operator : transformed_operator;
+      if (!has_tangent)
+        return transformed_operator;
+      return identity ? *tangent_itself : tangent_operator;
     }
 
     /// Q^T K Q of the body's stiffness matrix as it was when the basis was
@@ -52,7 +55,8 @@ namespace FrictionalContact
     }
 
     /// K_T,w = Q^T K_T Q for the tangent @p tangent of nonlinear laws; from
-    /// then on stiffness().
+    /// then on stiffness(). Where Q = I, @p tangent itself (not copied:
+    /// it must outlive the basis, and be the same matrix at every call).
     void
     update_tangent(const TrilinosWrappers::SparseMatrix &tangent);
 
@@ -92,6 +96,11 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix transformed_tangent;
     AssembledStiffness             tangent_operator{transformed_tangent};
     bool                           has_tangent = false;
+    /// Whether Q = I: no mortar row reaches a master dof (every master is
+    /// a rigid tool); K_w is then K, and K_T,w the tangent itself.
+    bool                                identity = false;
+    std::unique_ptr<AssembledStiffness>   tangent_itself;
+    const TrilinosWrappers::SparseMatrix *tangent_source = nullptr;
     TrilinosWrappers::SparseMatrix transformed_divergence;
     VolumetricSplit                split;
   };
