@@ -2,7 +2,8 @@
 // positions: on a mesh with hanging vertices and a fixed boundary, split
 // over the ranks, a matrix assembled with the positions where a cell has
 // them (and AffineConstraints elsewhere) equals one assembled through
-// AffineConstraints only, to round-off; both paths are taken.
+// AffineConstraints only, to round-off; both paths are taken; and the
+// positions of a cell refuse dofs other than those they were taken for.
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -74,7 +75,7 @@ namespace
                     std::sin(1. + i + 3. * j + 7. * cell->center()[0] + 5. * cell->center()[1]);
               constraints.distribute_local_to_global(cell_matrix, dofs, by_constraints);
               const unsigned int c = cell->active_cell_index();
-              if (positions.has(c))
+              if (positions.has(c, dofs))
                 {
                   positions.add(c, cell_matrix);
                   ++with_positions;
@@ -88,6 +89,23 @@ namespace
         by_constraints.compress(VectorOperation::add);
         by_positions.compress(VectorOperation::add);
       }
+    // Positions never serve a cell with other dofs than they were taken
+    // for (as after a change of the mesh the fingerprint missed).
+    bool refuses_other_dofs = true;
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && positions.has(cell->active_cell_index(), [&] {
+              cell->get_dof_indices(dofs);
+              return dofs;
+            }()))
+          {
+            std::swap(dofs[0], dofs[1]);
+            refuses_other_dofs =
+              refuses_other_dofs && !positions.has(cell->active_cell_index(), dofs);
+          }
+    }
+    refuses_other_dofs = Utilities::MPI::min(refuses_other_dofs ? 1 : 0, comm) == 1;
     const double norm = by_constraints.frobenius_norm();
     by_positions.add(-1., by_constraints);
     const double difference = by_positions.frobenius_norm() / norm;
@@ -98,7 +116,8 @@ namespace
                 << ", through the constraints: " << (without > 0 ? "some" : "none")
                 << "; the two matrices differ by "
                 << (difference <= 1e-14 ? "at most 1e-14" : "MORE than 1e-14")
-                << " (relative, Frobenius)" << std::endl;
+                << " (relative, Frobenius); positions refuse a cell's dofs in another order: "
+                << (refuses_other_dofs ? "yes" : "NO") << std::endl;
   }
 } // namespace
 

@@ -511,7 +511,7 @@ namespace FrictionalContact
           element_forces += scratch.force.norm_sqr();
           if (changed_cells_only)
             scratch.matrix.add(-1., before);
-          if (positions.has(c))
+          if (positions.has(c, scratch.dof_indices))
             {
               positions.add(c, scratch.matrix);
               constraints.distribute_local_to_global(scratch.force,

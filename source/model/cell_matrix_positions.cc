@@ -35,6 +35,7 @@ namespace FrictionalContact
     fingerprint = now;
     values      = entries;
     first.assign(now.n_active_cells, none);
+    dof_hashes.assign(now.n_active_cells, 0);
     positions.clear();
     if (values == nullptr)
       return;
@@ -88,7 +89,8 @@ namespace FrictionalContact
           }
         if (!usable)
           continue;
-        first[cell->active_cell_index()] = positions.size();
+        first[cell->active_cell_index()]      = positions.size();
+        dof_hashes[cell->active_cell_index()] = hash(dof_indices);
         positions.insert(positions.end(), cell_positions.begin(), cell_positions.end());
       }
   }

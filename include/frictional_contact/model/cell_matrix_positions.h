@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace FrictionalContact
@@ -21,10 +22,10 @@ namespace FrictionalContact
    * Only for the locally owned cells whose dofs are all rows of this rank
    * and none constrained; the others go through AffineConstraints as
    * before. A Q1 vertex's dim dofs are neighbours in every row that holds
-   * one, so a position is kept per (row, vertex): dim^2 2^dim positions
-   * per cell (192 in 3D). Owns those positions and the fingerprint of the
-   * mesh, constraints and matrix they were taken for; taken again when it
-   * changes.
+   * one, so a position is kept per (row, vertex): dim 4^dim positions
+   * per cell (192 in 3D), and a hash of the cell's dofs. Owns those
+   * positions and the fingerprint of the mesh, constraints and matrix
+   * they were taken for; taken again when it changes.
    */
   template <int dim>
   class CellMatrixPositions
@@ -37,11 +38,15 @@ namespace FrictionalContact
            const AffineConstraints<double> &constraints,
            TrilinosWrappers::SparseMatrix  &matrix);
 
-    /// Whether the cell of @p active_cell_index has positions.
+    /// Whether the cell of @p active_cell_index, with the dofs
+    /// @p dof_indices, has positions (the dofs checked by a hash, so that
+    /// positions never serve a cell they were not taken for).
     bool
-    has(const unsigned int active_cell_index) const
+    has(const unsigned int                          active_cell_index,
+        const std::vector<types::global_dof_index> &dof_indices) const
     {
-      return active_cell_index < first.size() && first[active_cell_index] != none;
+      return active_cell_index < first.size() && first[active_cell_index] != none &&
+             dof_hashes[active_cell_index] == hash(dof_indices);
     }
 
     /**
@@ -52,6 +57,16 @@ namespace FrictionalContact
     add(const unsigned int active_cell_index, const FullMatrix<double> &cell_matrix) const;
 
   private:
+    /// FNV-1a of the dof indices.
+    static std::uint64_t
+    hash(const std::vector<types::global_dof_index> &dof_indices)
+    {
+      std::uint64_t h = 14695981039346656037ull;
+      for (const types::global_dof_index i : dof_indices)
+        h = (h ^ static_cast<std::uint64_t>(i)) * 1099511628211ull;
+      return h;
+    }
+
     static constexpr unsigned int dofs_per_cell = dim * (1u << dim);
     static constexpr unsigned int none          = static_cast<unsigned int>(-1);
 
@@ -80,8 +95,10 @@ namespace FrictionalContact
 
     Fingerprint fingerprint;
     double     *values = nullptr;
-    /// Per active cell, the first of its positions, or none.
-    std::vector<unsigned int> first;
+    /// Per active cell, the first of its positions, or none, and the
+    /// hash of its dofs.
+    std::vector<unsigned int>  first;
+    std::vector<std::uint64_t> dof_hashes;
     /// Per cell with positions, for each local row i and vertex b, the
     /// position of the column of b's first dof in row i.
     std::vector<int> positions;
