@@ -15,9 +15,7 @@ namespace FrictionalContact
   Tensor<1, dim>
   ContactOperator<dim>::to_local(const unsigned int j, Tensor<1, dim> v) const
   {
-    for (unsigned int c = 0; c < dim; ++c)
-      if (!nodes[j].free[c])
-        v[c] = 0;
+    v = free_part(j, v);
     Tensor<1, dim> local;
     local[0] = nodes[j].into_obstacle * v;
     if (!tangents.empty())
@@ -37,10 +35,7 @@ namespace FrictionalContact
     if (!tangents.empty())
       for (unsigned int k = 0; k < dim - 1; ++k)
         x += v[k + 1] * tangents[j][k];
-    for (unsigned int c = 0; c < dim; ++c)
-      if (!nodes[j].free[c])
-        x[c] = 0;
-    return x;
+    return free_part(j, x);
   }
 
 
@@ -57,20 +52,14 @@ namespace FrictionalContact
         const bool pair_turns = pairs_turn && nodes[j].pair >= 0 && pair_normal_lengths[j] > 0;
         if (!nodes[j].follows && !pair_turns)
           continue;
-        Tensor<1, dim> u_j = nodal_value(j, u);
-        for (unsigned int c = 0; c < dim; ++c)
-          if (!nodes[j].free[c])
-            u_j[c] = 0;
-        turns[j] = normal_gradients[j] * u_j;
+        turns[j] = normal_gradients[j] * free_part(j, nodal_value(j, u));
         if (pair_turns)
           {
             // A tool's normal n turns with the node's move along it; t_n is
             // -P n / |P n|, P leaving out the fixed components.
-            for (unsigned int c = 0; c < dim; ++c)
-              if (!nodes[j].free[c])
-                turns[j][c] = 0;
+            const Tensor<1, dim>  turn = free_part(j, turns[j]);
             const Tensor<1, dim> &into = nodes[j].into_obstacle;
-            turns[j] = (turns[j] - (turns[j] * into) * into) / pair_normal_lengths[j];
+            turns[j] = (turn - (turn * into) * into) / pair_normal_lengths[j];
           }
       }
   }
@@ -87,11 +76,7 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < nodes.size(); ++j)
       if (turns_scratch[j].norm_square() > 0)
         {
-          Tensor<1, dim> force = turning_force(j, r[j], turns_scratch[j]);
-          for (unsigned int c = 0; c < dim; ++c)
-            if (!nodes[j].free[c])
-              force[c] = 0;
-          add_nodal_value(j, force, f);
+          add_nodal_value(j, free_part(j, turning_force(j, r[j], turns_scratch[j])), f);
         }
   }
 

@@ -186,10 +186,7 @@ namespace FrictionalContact
           // A node on a symmetry plane has its own half of the surface
           // only: its averaged normal leans out of the plane. The free
           // components are its normal (unit, so T_j stays orthonormal).
-          Tensor<1, dim> normal = data->normal;
-          for (unsigned int c = 0; c < dim; ++c)
-            if (!nodes[j].free[c])
-              normal[c] = 0;
+          Tensor<1, dim> normal  = free_part(j, data->normal);
           pair_normal_lengths[j] = normal.norm();
           if (normal.norm() > 0)
             normal /= normal.norm();

@@ -40,7 +40,11 @@ namespace FrictionalContact
       body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
     TrilinosWrappers::SparseMatrix product;
     if (identity)
-      transformed_stiffness.copy_from(stiffness);
+      {
+        transformed_stiffness.copy_from(stiffness);
+        // The tangents of nonlinear laws are made in that same matrix.
+        tangent_itself = std::make_unique<AssembledStiffness>(stiffness);
+      }
     else
       {
         stiffness.mmult(product, basis);
@@ -69,13 +73,7 @@ namespace FrictionalContact
     has_tangent = true;
     if (identity)
       {
-        // Made once: problems hold references to stiffness().
-        if (!tangent_itself)
-          {
-            tangent_itself = std::make_unique<AssembledStiffness>(tangent);
-            tangent_source = &tangent;
-          }
-        AssertThrow(&tangent == tangent_source, ExcInternalError());
+        AssertThrow(&tangent == &tangent_itself->matrix("the tangent"), ExcInternalError());
         return;
       }
     TrilinosWrappers::SparseMatrix product;

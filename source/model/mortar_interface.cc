@@ -298,7 +298,6 @@ namespace FrictionalContact
       }
     const auto tree = pack_rtree(boxes);
 
-
     // Each face of this rank's cells adds, once, to the rows of its
     // vertices: the face normal at each component dof, the lumped weight and
     // the row of M at the x dof (for a tool, its sums). A hanging vertex has
@@ -358,20 +357,21 @@ namespace FrictionalContact
             {
               const auto &[y, master] = masters[m];
               const double orientation = master != nullptr ? master->orientation : 1.;
-              if (outward_normal(y, orientation) * normal >= 0)
+              const Tensor<1, dim> master_normal = outward_normal(y, orientation);
+              const double         facing        = -(master_normal * normal);
+              if (facing <= 0)
                 continue; // not facing the slave
               // Projected along the slave's normal, or with the tool's
               // frames along the tool's, as a distance to it is measured;
               // then a tool face's part fades from whole at 30 degrees from
               // facing the slave face to none at 60 (further, its projection
               // would land far from it; a sudden cut made the geometry jump).
-              const double facing = -(outward_normal(y, orientation) * normal);
               const double fade =
                 tool_frames ? std::clamp((facing - 0.5) / (std::sqrt(0.75) - 0.5), 0., 1.) : 1.;
               if (fade == 0)
                 continue;
               Table<2, double> M = MortarSegments::face_integrals<dim>(
-                x, tool_frames ? outward_normal(y, 1.) : normal, y);
+                x, tool_frames ? master_normal : normal, y);
               if (fade < 1)
                 for (unsigned int a = 0; a < n_face_vertices; ++a)
                   for (unsigned int b = 0; b < n_face_vertices; ++b)

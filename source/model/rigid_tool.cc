@@ -168,6 +168,19 @@ namespace FrictionalContact
           else
             std::swap(face[1], face[2]); // lexicographic: the transposed quad
         }
+    // The faces' normals summed at the vertices, in the file's frame.
+    vertex_normals.assign(vertices.size(), Tensor<1, dim>());
+    for (const auto &face : faces)
+      {
+        MortarSegments::FaceVertices<dim> x;
+        for (unsigned int v = 0; v < face.size(); ++v)
+          x[v] = vertices[face[v]];
+        const Tensor<1, dim> normal = MortarSegments::unit_normal<dim>(x);
+        for (const unsigned int v : face)
+          vertex_normals[v] += normal;
+      }
+    for (Tensor<1, dim> &normal : vertex_normals)
+      normal /= normal.norm();
   }
 
 
@@ -412,18 +425,7 @@ namespace FrictionalContact
   std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>>
   RigidTool<dim>::vertex_normals_at(const double t) const
   {
-    // The faces' normals where the file puts them, summed at the vertices,
-    // then turned by the rotation R(t) (a translation does not turn them).
-    std::vector<Tensor<1, dim>> sums(vertices.size());
-    for (const auto &face : faces)
-      {
-        MortarSegments::FaceVertices<dim> x;
-        for (unsigned int v = 0; v < face.size(); ++v)
-          x[v] = vertices[face[v]];
-        const Tensor<1, dim> normal = MortarSegments::unit_normal<dim>(x);
-        for (const unsigned int v : face)
-          sums[v] += normal;
-      }
+    // Turned by the rotation R(t); a translation does not turn them.
     const double theta = angle->value(t);
     std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>> result;
     result.reserve(faces.size());
@@ -431,7 +433,7 @@ namespace FrictionalContact
       {
         std::array<Tensor<1, dim>, dim == 2 ? 2 : 4> normals;
         for (unsigned int v = 0; v < face.size(); ++v)
-          normals[v] = rotate<dim>(sums[face[v]] / sums[face[v]].norm(), axis, theta);
+          normals[v] = rotate<dim>(vertex_normals[face[v]], axis, theta);
         result.push_back(normals);
       }
     return result;

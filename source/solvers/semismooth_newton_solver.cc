@@ -189,7 +189,6 @@ namespace FrictionalContact
     line_search(const MeritAlongStep<dim> &merit)
     {
       LineSearchStep step{1., merit(0.), merit(1.)};
-      if (getenv("LSDEBUG")) std::cout << "DEBUG full " << std::sqrt(step.merit_after) << " before " << std::sqrt(step.merit_before) << std::endl;
       while (step.t > 1. / 64 &&
              step.merit_after > (1 - 1e-4 * step.t) * step.merit_before)
         {

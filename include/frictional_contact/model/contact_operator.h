@@ -503,6 +503,16 @@ namespace FrictionalContact
              (to_cartesian(j, tangential) * turn) * nodes[j].into_obstacle;
     }
 
+    /// @p v without the components that fixed boundaries hold at node j.
+    Tensor<1, dim>
+    free_part(const unsigned int j, Tensor<1, dim> v) const
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        if (!nodes[j].free[c])
+          v[c] = 0;
+      return v;
+    }
+
     /// Turns candidate j's tangents with its normal, now @p into, by the
     /// least rotation (continuous, so that the tangential reactions keep
     /// their meaning).

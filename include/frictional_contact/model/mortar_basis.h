@@ -55,8 +55,8 @@ namespace FrictionalContact
     }
 
     /// K_T,w = Q^T K_T Q for the tangent @p tangent of nonlinear laws; from
-    /// then on stiffness(). Where Q = I, @p tangent itself (not copied:
-    /// it must outlive the basis, and be the same matrix at every call).
+    /// then on stiffness(). Where Q = I, @p tangent itself, which must be
+    /// the body's matrix the basis was made from (not copied).
     void
     update_tangent(const TrilinosWrappers::SparseMatrix &tangent);
 
@@ -99,8 +99,7 @@ namespace FrictionalContact
     /// Whether Q = I: no mortar row reaches a master dof (every master is
     /// a rigid tool); K_w is then K, and K_T,w the tangent itself.
     bool                                identity = false;
-    std::unique_ptr<AssembledStiffness>   tangent_itself;
-    const TrilinosWrappers::SparseMatrix *tangent_source = nullptr;
+    std::unique_ptr<AssembledStiffness> tangent_itself;
     TrilinosWrappers::SparseMatrix transformed_divergence;
     VolumetricSplit                split;
   };

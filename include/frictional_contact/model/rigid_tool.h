@@ -111,6 +111,9 @@ namespace FrictionalContact
     std::string                                           file;
     std::vector<Point<dim>>                               vertices;
     std::vector<std::array<unsigned int, dim == 2 ? 2 : 4>> faces;
+    /// At each vertex the unit mean of the normals of the faces around it,
+    /// in the file's frame.
+    std::vector<Tensor<1, dim>> vertex_normals;
     Point<dim>                                            center;
     Tensor<1, dim>                                        axis;
     std::unique_ptr<TimeFunction>                         translation;
