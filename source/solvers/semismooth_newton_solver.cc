@@ -440,11 +440,11 @@ namespace FrictionalContact
       work.residual = work.K_du;
       work.residual -= problem.load;
       work.residual -= work.T_r;
-      // A nonlinear law's force balance along the step, by evaluating it
-      // (w and rhs are free once the step is taken).
-      std::function<double(double)> nonlinear_balance;
+      // A nonlinear law's residual along the step, by evaluating it (w and
+      // rhs are free once the step is taken).
+      std::function<const TrilinosWrappers::MPI::Vector *(double)> nonlinear_residual;
       if (problem.nonlinear != nullptr)
-        nonlinear_balance = [&](const double t) {
+        nonlinear_residual = [&](const double t) -> const TrilinosWrappers::MPI::Vector * {
           work.w = work.previous_du;
           work.w.sadd(1 - t, t, du);
           try
@@ -453,16 +453,16 @@ namespace FrictionalContact
             }
           catch (const InvertedCell &)
             {
-              return std::numeric_limits<double>::infinity();
+              return nullptr;
             }
           work.rhs -= problem.load;
           work.rhs.add(-(1 - t), work.previous_T_r, -t, work.T_r);
-          return work.rhs.norm_sqr();
+          return &work.rhs;
         };
-      const MeritAlongStep<dim> merit(problem, c, c_t, friction, mean_c,
+      const MeritAlongStep<dim> merit(problem, conditions, c, c_t, friction, mean_c,
                                       work.previous_du, du, work.previous_r, r,
                                       work.previous_residual, work.residual,
-                                      work.scratch, nonlinear_balance);
+                                      work.scratch, nonlinear_residual);
       const LineSearchStep step = line_search(merit);
       if (step.t < 1)
         {

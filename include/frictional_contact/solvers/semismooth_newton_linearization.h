@@ -283,15 +283,22 @@ namespace FrictionalContact
      * The merit of the line search at the point t of the segment from the
      * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
      * complementarity functions of all nodes, scaled by c_j, plus the
-     * squared force balance residual, scaled by the mean c. The residual is
-     * linear along the segment for a linear law; for a nonlinear one
-     * @p nonlinear_balance evaluates its square at t. Collective.
+     * squared force balance residual, scaled by the mean c. For a linear
+     * law the residual and the reactions are linear along the segment. For
+     * a nonlinear one, @p nonlinear_residual gives the residual at t,
+     * N(du) - p - T ((1 - t) r_0 + t r_1) (nullptr where a cell inverts),
+     * and the reactions of the nodes in contact (@p conditions) take, as r_1
+     * did at t = 1, its part that the straight line misses, N(du) - (1 - t)
+     * N(du_0) - t N(du_1): with the reactions interpolated alone, a long
+     * Newton step's curvature entered every short step's merit to first
+     * order, and the merit rose along steps that descend. Collective.
      */
     template <int dim>
     class MeritAlongStep
     {
     public:
       MeritAlongStep(const IncrementalProblem<dim>     &problem,
+                     const std::vector<NodeCondition>  &conditions,
                      const std::vector<double>         &c,
                      const std::vector<double>         &c_t,
                      const bool                         friction,
@@ -303,8 +310,9 @@ namespace FrictionalContact
                      const Vector                      &balance_0,
                      const Vector                      &balance_1,
                      Vector                            &scratch,
-                     std::function<double(double)> nonlinear_balance = {})
+                     std::function<const Vector *(double)> nonlinear_residual = {})
         : problem(problem)
+        , conditions(conditions)
         , c(c)
         , c_t(c_t)
         , friction(friction)
@@ -313,7 +321,10 @@ namespace FrictionalContact
         , du_1(du_1)
         , r_0(r_0)
         , r_1(r_1)
-        , nonlinear_balance(std::move(nonlinear_balance))
+        , balance_0(balance_0)
+        , balance_1(balance_1)
+        , scratch(scratch)
+        , nonlinear_residual(std::move(nonlinear_residual))
       {
         // Frames that follow the configuration turn along the step as the
         // Newton tangent has them turn (to first order).
@@ -333,39 +344,74 @@ namespace FrictionalContact
       double
       operator()(const double t) const
       {
+        const bool    inside   = nonlinear_residual && t > 0 && t < 1;
+        const Vector *residual = inside ? nonlinear_residual(t) : nullptr;
+        if (inside && residual == nullptr)
+          return std::numeric_limits<double>::infinity();
+        if (inside)
+          scratch = *residual;
         double sum = 0;
         for (unsigned int j = 0; j < c.size(); ++j)
           {
-            const Tensor<1, dim> u_0 = problem.relative_displacement(j, du_0);
-            const Tensor<1, dim> u_j =
-              (1 - t) * u_0 + t * problem.relative_displacement(j, du_1);
-            Tensor<1, dim> r_j = (1 - t) * r_0[j] + t * r_1[j];
-            if (!step_turns.empty())
-              r_j += problem.contact.frame_turn(j, r_j, t * step_turns[j]);
-            const double         gap   = problem.gaps[j] - u_j[0];
-            const double         phi_n = r_j[0] - std::min(0., r_j[0] + c[j] * gap);
-            const double mu_j =
-              friction ? problem.contact.friction_coefficient(j) : 0.;
-            const double bound_j = mu_j * std::max(0., -(r_j[0] + c[j] * gap));
-            Tensor<1, dim> z     = r_j - c_t[j] * u_j;
-            z[0]                 = 0;
-            if (z.norm() > bound_j)
-              z *= bound_j / z.norm();
-            Tensor<1, dim> phi_t = r_j - z;
+            Tensor<1, dim> missed;
+            if (inside && conditions[j] != NodeCondition::none)
+              {
+                const ContactMap<dim> &contact = problem.contact;
+                missed = contact.local_part(j, *residual) -
+                         (1 - t) * contact.local_part(j, balance_0) -
+                         t * contact.local_part(j, balance_1);
+                contact.add_reaction(j, -missed, scratch);
+              }
+            const NodeAtStep at = node_at(j, t, missed);
+            const double phi_n = at.r[0] - std::min(0., at.augmented_normal);
+            Tensor<1, dim> z     = at.z;
+            if (z.norm() > at.bound)
+              z *= at.bound / z.norm();
+            Tensor<1, dim> phi_t = at.r - z;
             phi_t[0]             = 0;
             // A node whose normal direction a support holds has c_j = 0
             // (no free normal component): the mean scale serves it.
             sum += (phi_n * phi_n + phi_t * phi_t) / (c[j] > 0 ? c[j] : mean_c);
           }
+        const double balance =
+          inside ? scratch.norm_sqr() :
+                   balance_a + 2 * t * balance_b + t * t * balance_c;
         return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
-               (nonlinear_balance ? (t == 0 ? balance_a : t == 1 ? balance_a + 2 * balance_b + balance_c :
-                                                              nonlinear_balance(t)) :
-                                    balance_a + 2 * t * balance_b + t * t * balance_c) /
-                 mean_c;
+               balance / mean_c;
       }
 
     private:
+      /// A node's reaction, augmented normal reaction r_n + c_j g, friction
+      /// bound and augmented tangential reaction z at a point of the step.
+      struct NodeAtStep
+      {
+        Tensor<1, dim> r;
+        double         augmented_normal;
+        double         bound;
+        Tensor<1, dim> z;
+      };
+
+      /// Node @p j at the point @p t, its reaction corrected by @p missed.
+      NodeAtStep
+      node_at(const unsigned int j, const double t, const Tensor<1, dim> &missed) const
+      {
+        const Tensor<1, dim> u_j =
+          (1 - t) * problem.relative_displacement(j, du_0) +
+          t * problem.relative_displacement(j, du_1);
+        NodeAtStep at;
+        at.r = (1 - t) * r_0[j] + t * r_1[j] + missed;
+        if (!step_turns.empty())
+          at.r += problem.contact.frame_turn(j, at.r, t * step_turns[j]);
+        at.augmented_normal = at.r[0] + c[j] * (problem.gaps[j] - u_j[0]);
+        const double mu_j = friction ? problem.contact.friction_coefficient(j) : 0.;
+        at.bound          = mu_j * std::max(0., -at.augmented_normal);
+        at.z              = at.r - c_t[j] * u_j;
+        at.z[0]           = 0;
+        return at;
+      }
+
       const IncrementalProblem<dim>     &problem;
+      const std::vector<NodeCondition>  &conditions;
       const std::vector<double>         &c;
       const std::vector<double>         &c_t;
       const bool                         friction;
@@ -374,8 +420,11 @@ namespace FrictionalContact
       const Vector                      &du_1;
       const std::vector<Tensor<1, dim>> &r_0;
       const std::vector<Tensor<1, dim>> &r_1;
+      const Vector                      &balance_0;
+      const Vector                      &balance_1;
+      Vector                            &scratch;
       double                             balance_a, balance_b, balance_c;
-      const std::function<double(double)> nonlinear_balance;
+      const std::function<const Vector *(double)> nonlinear_residual;
       /// The turn of each frame per unit step (empty for fixed frames).
       std::vector<Tensor<1, dim>>         step_turns;
     };
