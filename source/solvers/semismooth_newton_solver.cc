@@ -524,8 +524,10 @@ namespace FrictionalContact
                       Patterns::Double(0.),
                       "c_t,j = this times c_j in zeta = r_t - c_t u_t. A node "
                       "whose stick/slip state keeps changing gets a c_t ten "
-                      "times smaller: a large c_t makes the slip direction "
-                      "flip back and forth, a small one decides by the force.");
+                      "times smaller, twice at most: a large c_t makes the "
+                      "slip direction flip back and forth, a small one "
+                      "decides by the force, and one far smaller sorts a node "
+                      "that slides by a force a hair inside the cone.");
     prm.declare_entry("Linear reduction",
                       "0.1",
                       Patterns::Double(0., 1.),

@@ -200,8 +200,22 @@ namespace FrictionalContact
         , slip_direction(c_t.size())
         , robin(c_t.size(), 0.)
         , c_t(c_t)
+        , smallest_c_t(c_t)
         , flips(c_t.size(), 0)
-      {}
+      {
+        for (double &c_t_j : smallest_c_t)
+          c_t_j *= smallest_c_t_fraction;
+      }
+
+      /**
+       * How far the anti-cycling may lower c_t: to this fraction of its
+       * first value (two tenfold cuts). A node that slid far in the
+       * increment and whose c_t had been cut without a floor (to 1e-12 of
+       * c_j in the 3D ironing) was sorted by a force a hair inside the cone
+       * alone: sticking, the Newton step pulled it back by the whole slide,
+       * and the merit rose hundreds of times along the step.
+       */
+      static constexpr double smallest_c_t_fraction = 0.01;
 
       std::vector<NodeCondition>  conditions;
       /// mu max(sigma_j, 0): the friction bound of each node.
@@ -212,6 +226,8 @@ namespace FrictionalContact
       /// c_t per node, and how often its stick/slip state went back and
       /// forth.
       std::vector<double>       c_t;
+      /// The floor of c_t per node (smallest_c_t_fraction of the first).
+      std::vector<double>       smallest_c_t;
       std::vector<unsigned int> flips;
     };
 
@@ -270,7 +286,7 @@ namespace FrictionalContact
             sets.slip_direction[j] * direction_before < 0));
         if (mu_j > 0 && flipped && ++sets.flips[j] >= 2)
           {
-            sets.c_t[j] *= 0.1;
+            sets.c_t[j] = std::max(0.1 * sets.c_t[j], sets.smallest_c_t[j]);
             sets.flips[j] = 0;
           }
       }
