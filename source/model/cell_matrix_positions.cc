@@ -33,11 +33,10 @@ namespace FrictionalContact
     if (now == fingerprint)
       return;
     fingerprint = now;
-    values      = entries;
     first.assign(now.n_active_cells, none);
     dof_hashes.assign(now.n_active_cells, 0);
     positions.clear();
-    if (values == nullptr)
+    if (fingerprint.values == nullptr)
       return;
 
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -107,7 +106,7 @@ namespace FrictionalContact
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int b = 0; b < n_vertices; ++b)
         {
-          double *value = values + position[i * n_vertices + b];
+          double *value = fingerprint.values + position[i * n_vertices + b];
           for (unsigned int c = 0; c < dim; ++c)
             value[c] += cell_matrix(i, dim * b + c);
         }

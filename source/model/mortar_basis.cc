@@ -35,11 +35,10 @@ namespace FrictionalContact
       basis.set(entry.first, entry.second, value);
     basis.compress(VectorOperation::insert);
 
-    identity = Utilities::MPI::sum(E.size(), comm) == 0;
     const TrilinosWrappers::SparseMatrix &stiffness =
       body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
     TrilinosWrappers::SparseMatrix product;
-    if (identity)
+    if (Utilities::MPI::sum(E.size(), comm) == 0) // Q = I
       {
         transformed_stiffness.copy_from(stiffness);
         // The tangents of nonlinear laws are made in that same matrix.
@@ -71,7 +70,7 @@ namespace FrictionalContact
   MortarBasis<dim>::update_tangent(const TrilinosWrappers::SparseMatrix &tangent)
   {
     has_tangent = true;
-    if (identity)
+    if (tangent_itself)
       {
         AssertThrow(&tangent == &tangent_itself->matrix("the tangent"), ExcInternalError());
         return;

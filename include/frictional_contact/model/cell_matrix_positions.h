@@ -70,11 +70,12 @@ namespace FrictionalContact
     static constexpr unsigned int dofs_per_cell = dim * (1u << dim);
     static constexpr unsigned int none          = static_cast<unsigned int>(-1);
 
-    /// What the positions were taken for: the value array, size and rows
-    /// of the matrix, the mesh and dofs, and the constrained dofs.
+    /// What the positions were taken for: the value array (where add()
+    /// adds), size and rows of the matrix, the mesh and dofs, and the
+    /// constrained dofs.
     struct Fingerprint
     {
-      const double           *values            = nullptr;
+      double                 *values            = nullptr;
       int                     n_entries         = -1;
       unsigned int            n_active_cells    = 0;
       types::global_dof_index n_dofs            = 0;
@@ -94,7 +95,6 @@ namespace FrictionalContact
     };
 
     Fingerprint fingerprint;
-    double     *values = nullptr;
     /// Per active cell, the first of its positions, or none, and the
     /// hash of its dofs.
     std::vector<unsigned int>  first;

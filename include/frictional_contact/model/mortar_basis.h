@@ -42,7 +42,7 @@ namespace FrictionalContact
     {
       if (!has_tangent)
         return transformed_operator;
-      return identity ? *tangent_itself : tangent_operator;
+      return tangent_itself ? *tangent_itself : tangent_operator;
     }
 
     /// Q^T K Q of the body's stiffness matrix as it was when the basis was
@@ -96,9 +96,9 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix transformed_tangent;
     AssembledStiffness             tangent_operator{transformed_tangent};
     bool                           has_tangent = false;
-    /// Whether Q = I: no mortar row reaches a master dof (every master is
-    /// a rigid tool); K_w is then K, and K_T,w the tangent itself.
-    bool                                identity = false;
+    /// Where Q = I (no mortar row reaches a master dof: every master is a
+    /// rigid tool), K_T,w is the tangent itself, made in the body's
+    /// matrix; K_w is then K. Null otherwise.
     std::unique_ptr<AssembledStiffness> tangent_itself;
     TrilinosWrappers::SparseMatrix transformed_divergence;
     VolumetricSplit                split;

@@ -7,6 +7,7 @@
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -337,11 +338,19 @@ namespace FrictionalContact
         , du_1(du_1)
         , r_0(r_0)
         , r_1(r_1)
-        , balance_0(balance_0)
-        , balance_1(balance_1)
         , scratch(scratch)
         , nonlinear_residual(std::move(nonlinear_residual))
       {
+        // The nodes in contact's parts of both ends' residuals, for the
+        // reactions the straight line misses (nonlinear laws).
+        if (this->nonlinear_residual)
+          {
+            balance_at_nodes.resize(c.size());
+            for (unsigned int j = 0; j < c.size(); ++j)
+              if (conditions[j] != NodeCondition::none)
+                balance_at_nodes[j] = {{problem.contact.local_part(j, balance_0),
+                                        problem.contact.local_part(j, balance_1)}};
+          }
         // Frames that follow the configuration turn along the step as the
         // Newton tangent has them turn (to first order).
         if (problem.contact.frames_follow_configuration())
@@ -374,8 +383,8 @@ namespace FrictionalContact
               {
                 const ContactMap<dim> &contact = problem.contact;
                 missed = contact.local_part(j, *residual) -
-                         (1 - t) * contact.local_part(j, balance_0) -
-                         t * contact.local_part(j, balance_1);
+                         (1 - t) * balance_at_nodes[j][0] -
+                         t * balance_at_nodes[j][1];
                 contact.add_reaction(j, -missed, scratch);
               }
             const NodeAtStep at = node_at(j, t, missed);
@@ -436,9 +445,10 @@ namespace FrictionalContact
       const Vector                      &du_1;
       const std::vector<Tensor<1, dim>> &r_0;
       const std::vector<Tensor<1, dim>> &r_1;
-      const Vector                      &balance_0;
-      const Vector                      &balance_1;
       Vector                            &scratch;
+      /// At each node in contact, its parts of the residuals at t = 0 and 1
+      /// (nonlinear laws only).
+      std::vector<std::array<Tensor<1, dim>, 2>> balance_at_nodes;
       double                             balance_a, balance_b, balance_c;
       const std::function<const Vector *(double)> nonlinear_residual;
       /// The turn of each frame per unit step (empty for fixed frames).
