@@ -156,7 +156,7 @@ namespace FrictionalContact
     const TrilinosWrappers::MPI::Vector          &u,
     const double                                  t_start,
     const double                                  t_end,
-    const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)> &solve_once)
+    const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)> &solve_once) const
   {
     ContactOperator<dim> &contact = model.get_contact();
     if (!contact.has_pairs())
@@ -171,27 +171,16 @@ namespace FrictionalContact
     TrilinosWrappers::MPI::Vector start_ghosted = body.make_ghosted_vector();
     start_ghosted = start;
     contact.update_pairs(body, start_ghosted, t_start, t_end);
-    // The configuration x whose geometry the last solve had: the
-    // predicted one where the last increment's motion gives it.
-    TrilinosWrappers::MPI::Vector taken   = start;
-    TrilinosWrappers::MPI::Vector ghosted = body.make_ghosted_vector();
-    const bool predicted = contact.pairs_follow_configuration() &&
-                           last_motion.size() == start.size() && last_duration > 0;
-    if (predicted)
-      {
-        taken = u;
-        taken.add((t_end - t_start) / last_duration, last_motion);
-        ghosted = taken;
-        contact.update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
-      }
     IncrementOutcome<dim> outcome = solve_once(nullptr);
     if (!contact.pairs_follow_configuration())
       return outcome;
 
-    // Where the last solve ended, s: the fixed point x = s, accelerated
-    // by Anderson's mixing of the last passes.
-    SolveStatistics               work    = outcome.statistics;
-    TrilinosWrappers::MPI::Vector reached = start;
+    // The configuration x whose geometry the last solve had, and where
+    // that solve ended, s: the fixed point x = s, accelerated by
+    // Anderson's mixing of the last passes.
+    SolveStatistics               work = outcome.statistics;
+    TrilinosWrappers::MPI::Vector taken = start, reached = start;
+    TrilinosWrappers::MPI::Vector ghosted = body.make_ghosted_vector();
     AndersonMixing                mixing(anderson_depth);
     // Each solve starts from the last one's solution (its forces in
     // Cartesian components, before the frames change).
@@ -231,12 +220,7 @@ namespace FrictionalContact
             outcome.statistics.converged = settled;
             outcome.statistics.residuals = last.residuals;
             outcome.statistics.history   = last.history;
-            if (settled)
-              {
-                last_motion   = outcome.du;
-                last_duration = t_end - t_start;
-              }
-            else
+            if (!settled)
               outcome.statistics.failure =
                 "the contact pairs' geometry did not settle in " +
                 std::to_string(max_passes) +

@@ -308,7 +308,6 @@ namespace FrictionalContact
         contact.nodal_value(j, traction_field) * contact.nodal_area(j);
     model.assemble();
     increment_solver.initialize(model);
-    pair_geometry.forget_motion();
     pcout << "  mesh refinement " << cycle + 1 << ": "
           << model.mesh().n_global_active_cells() << " cells, d = "
           << body.n_free_dofs() << ", c = " << contact.n_candidates()

@@ -40,23 +40,12 @@ namespace FrictionalContact
           const double                         t_start,
           const double                         t_end,
           const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)>
-            &solve_once);
-
-    /// Forgets the last increment's motion (the mesh changed).
-    void
-    forget_motion()
-    {
-      last_motion.clear();
-    }
+            &solve_once) const;
 
   private:
     /// The largest change of a unit normal, and of a gap over the
     /// largest displacement where the increment ended, that counts as settled.
     double       tolerance;
     unsigned int max_passes;
-    /// The whole displacement increment of the last increment that
-    /// settled on this mesh, and its length in time.
-    TrilinosWrappers::MPI::Vector last_motion;
-    double                        last_duration = 0;
   };
 } // namespace FrictionalContact
