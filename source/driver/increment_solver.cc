@@ -315,45 +315,7 @@ namespace FrictionalContact
       }
     if (contact.has_pairs())
       {
-        if (preconditioner_basis && !rebuild)
-          // The AMG of the first increment on this mesh still serves: the
-          // mortar rows change little from one increment to the next
-          // (doc/performance.md, "Two bodies").
-          linear_solver.replace_matrix(mortar->stiffness(),
-                                       mortar->volumetric_split());
-        else
-          {
-            // The preconditioners from K_w as the basis was made (for a
-            // nonlinear law the solves then take its tangent).
-            linear_solver.release();
-            // On a copy of the tangent K_T,w at the start when rebuilt for
-            // it (the basis makes K_T,w anew at each Newton step).
-            if (rebuild)
-              {
-                // Emptied first: copy_from() into a matrix of another
-                // pattern decides per rank whether to copy the layout, and
-                // ranks that decide differently wait for each other forever.
-                tangent_copy.clear();
-                tangent_copy.copy_from(mortar->stiffness().matrix("the preconditioner"));
-                tangent_copy_operator = std::make_unique<AssembledStiffness>(tangent_copy);
-              }
-            linear_solver.initialize(rebuild ? *tangent_copy_operator :
-                                               mortar->initial_stiffness(),
-                                     mortar->modes_to_w(body.rigid_body_modes()),
-                                     0.,
-                                     mortar->volumetric_split());
-            linear_solver.replace_matrix(mortar->stiffness(),
-                                         mortar->volumetric_split());
-            preconditioner_basis = mortar;
-          }
-        if (geometric)
-          {
-            // One cycle of K for K_w and for the Newton systems.
-            mortar_cycle =
-              std::make_unique<MortarPreconditioner<dim>>(*geometric, *mortar);
-            linear_solver.set_geometric_multigrid(mortar_cycle.get(),
-                                                  mortar_cycle.get());
-          }
+        prepare_mortar_solves(body, rebuild);
         mu_pi = 0;
         const TrilinosWrappers::MPI::Vector load_in_u = load;
         mortar->force_to_w(load_in_u, load);
@@ -426,6 +388,54 @@ namespace FrictionalContact
     body.get_constraints().distribute(outcome.du);
     outcome.du += lifting;
     return outcome;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementSolver<dim>::prepare_mortar_solves(const ElasticBody<dim> &body,
+                                              const bool              rebuild)
+  {
+    if (preconditioner_basis && !rebuild)
+      // The AMG of the first increment on this mesh still serves: the
+      // mortar rows change little from one increment to the next
+      // (doc/performance.md, "Two bodies").
+      linear_solver.replace_matrix(mortar->stiffness(),
+                                   mortar->volumetric_split());
+    else
+      {
+        // The preconditioners from K_w as the basis was made (for a
+        // nonlinear law the solves then take its tangent).
+        linear_solver.release();
+        // On a copy of the tangent K_T,w at the start when rebuilt for
+        // it (the basis makes K_T,w anew at each Newton step).
+        if (rebuild)
+          {
+            // Emptied first: copy_from() into a matrix of another
+            // pattern decides per rank whether to copy the layout, and
+            // ranks that decide differently wait for each other forever.
+            tangent_copy.clear();
+            tangent_copy.copy_from(mortar->stiffness().matrix("the preconditioner"));
+            tangent_copy_operator = std::make_unique<AssembledStiffness>(tangent_copy);
+          }
+        linear_solver.initialize(rebuild ? *tangent_copy_operator :
+                                           mortar->initial_stiffness(),
+                                 mortar->modes_to_w(body.rigid_body_modes()),
+                                 0.,
+                                 mortar->volumetric_split());
+        linear_solver.replace_matrix(mortar->stiffness(),
+                                     mortar->volumetric_split());
+        preconditioner_basis = mortar;
+      }
+    if (geometric)
+      {
+        // One cycle of K for K_w and for the Newton systems.
+        mortar_cycle =
+          std::make_unique<MortarPreconditioner<dim>>(*geometric, *mortar);
+        linear_solver.set_geometric_multigrid(mortar_cycle.get(),
+                                              mortar_cycle.get());
+      }
   }
 
 

@@ -180,6 +180,13 @@ namespace FrictionalContact
     describe_contact_held_bodies(const Model<dim>   &model,
                                  ContactHeldBodies &held) const;
 
+    /// With contact pairs: the linear solver on K_w of this increment's
+    /// basis (or its tangent), keeping the preconditioners of the first
+    /// basis on this mesh unless @p rebuild asks for them anew on the
+    /// tangent; the geometric multigrid's cycle for K_w.
+    void
+    prepare_mortar_solves(const ElasticBody<dim> &body, const bool rebuild);
+
     /// Solves the contact problem of @p outcome from the elastic solution
     /// in outcome.du_solved (if any), or from @p warm_start; @p start is
     /// u^l with the prescribed increment.
