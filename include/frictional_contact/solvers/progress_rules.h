@@ -64,12 +64,18 @@ namespace FrictionalContact
 
   /**
    * When the semismooth Newton method gives up: its merit function must
-   * fall by a tenth of its best value within 25 steps. Owns the best merit
-   * and the step of the last progress.
+   * fall by a tenth of its best value within 25 steps; the same rule, over
+   * a longer window, for the residual of a Krylov solve of its Newton
+   * systems (StagnationControl). Owns the best merit and the step of the
+   * last progress.
    */
   class MeritWatch
   {
   public:
+    explicit MeritWatch(const unsigned int window = 25)
+      : window(window)
+    {}
+
     /// Forgets the merits before step @p k (the method changed its
     /// equations there: friction switched on).
     void
@@ -88,7 +94,7 @@ namespace FrictionalContact
           best_merit    = merit;
           last_progress = k;
         }
-      return k > last_progress + 25;
+      return k > last_progress + window;
     }
 
     /// The step (from 0) of the last new best merit.
@@ -99,6 +105,7 @@ namespace FrictionalContact
     }
 
   private:
+    unsigned int window;
     double       best_merit    = std::numeric_limits<double>::max();
     unsigned int last_progress = 0;
   };

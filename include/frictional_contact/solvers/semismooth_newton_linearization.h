@@ -5,6 +5,7 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <frictional_contact/solvers/contact_problem.h>
+#include <frictional_contact/solvers/progress_rules.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
 #include <array>
@@ -482,46 +483,36 @@ namespace FrictionalContact
     };
 
     /**
-     * A SolverControl that also gives up when the residual fell by less
-     * than a tenth over the last @p window iterations: a restarted GMRES
-     * on the Newton system of an iterate far from the solution (3D ironing
-     * on 108 x 12 x 36 cells, a sliding increment) stagnated at a few
-     * hundredths of its right-hand side and spent its whole budget of
-     * 10,000 iterations there, minutes per cut increment.
+     * A SolverControl that also gives up when the residual has not fallen
+     * by a tenth below its best in 500 iterations (MeritWatch's rule): a
+     * restarted GMRES on the Newton system of an iterate far from the
+     * solution (3D ironing on 108 x 12 x 36 cells, a sliding increment)
+     * stagnated at a few hundredths of its right-hand side and spent its
+     * whole budget of 10,000 iterations there, minutes per cut increment.
      */
     class StagnationControl : public SolverControl
     {
     public:
-      StagnationControl(const unsigned int max_steps,
-                        const double       tolerance,
-                        const unsigned int window)
+      StagnationControl(const unsigned int max_steps, const double tolerance)
         : SolverControl(max_steps, tolerance, false, false)
-        , window(window)
+        , progress(500)
       {}
 
       State
       check(const unsigned int step, const double value) override
       {
         const State state = SolverControl::check(step, value);
-        if (state != iterate || step % window != 0)
-          return state;
-        if (step > 0 && !(value < 0.9 * value_a_window_ago))
+        if (state == iterate && progress.stalled(step, value))
           {
             lcheck = failure;
             return failure;
           }
-        value_a_window_ago = value;
         return state;
       }
 
     private:
-      const unsigned int window;
-      double             value_a_window_ago = 0;
+      MeritWatch progress;
     };
-
-    /// Krylov iterations over which a Newton system's solve must reduce
-    /// its residual by a tenth (StagnationControl).
-    constexpr unsigned int stagnation_window = 500;
 
     /**
      * Solves A w = rhs to |rhs - A w| <= @p goal from w = 0: GMRES(50) when
@@ -580,7 +571,7 @@ namespace FrictionalContact
                                         w,
                                         rhs);
         }
-      StagnationControl control(max_iterations, goal, stagnation_window);
+      StagnationControl control(max_iterations, goal);
       if (non_symmetric)
         {
           if (variable_preconditioner)
