@@ -1,13 +1,16 @@
 // The increment driver alone, without a mesh: the times of the loading
-// history, and the on-failure policy (abort, or cut the failing increment
-// in half up to Maximum cuts times in a row), with a stand-in increment
-// that fails whenever it is longer than a given length.
+// history, the on-failure policy (abort, or cut the failing increment in
+// half up to Maximum cuts times in a row), and the increments that grow
+// after easy ones and shrink after hard ones, with a stand-in increment
+// that fails whenever it is longer than a given length and takes 10
+// iterations when longer than another.
 #include <deal.II/base/mpi.h>
 
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/driver/increment_driver.h>
 
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 using namespace FrictionalContact;
@@ -15,14 +18,27 @@ using namespace FrictionalContact;
 namespace
 {
   /// Runs a driver on @p loading; increments longer than @p longest fail,
-  /// the others take 2 iterations.
+  /// those longer than @p hard take 10 iterations, the others 2.
   void
-  check(const std::string &title, const std::string &loading, const double longest)
+  check(const std::string &title,
+        const std::string &loading,
+        const double       longest,
+        const double       hard = 1e10)
   {
     ParameterHandler prm;
     IncrementDriver::declare_parameters(prm);
     prm.parse_input_from_string("subsection Loading\n" + loading + "\nend\n");
-    IncrementDriver driver(prm);
+    std::unique_ptr<IncrementDriver> made;
+    try
+      {
+        made = std::make_unique<IncrementDriver>(prm);
+      }
+    catch (const InputError &error)
+      {
+        std::cout << title << ": refused: " << error.what() << std::endl;
+        return;
+      }
+    IncrementDriver &driver = *made;
 
     std::vector<unsigned int> solved;
     std::ostringstream        messages;
@@ -32,10 +48,11 @@ namespace
         driver.run(
           0,
           [&](const unsigned int l) {
-            if (driver.times()[l] - driver.start_time(l) > longest * (1 + 1e-12))
+            const double length = driver.times()[l] - driver.start_time(l);
+            if (length > longest * (1 + 1e-12))
               throw SolverError("too long");
             solved.push_back(l);
-            return 2u;
+            return length > hard * (1 + 1e-12) ? 10u : 2u;
           },
           messages);
       }
@@ -46,17 +63,20 @@ namespace
     std::cout << title << ": " << outcome << "; times";
     for (const double t : driver.times())
       std::cout << ' ' << t;
-    unsigned int cut_lines = 0, grown_lines = 0;
+    unsigned int cut_lines = 0, grown_lines = 0, halved_lines = 0;
     std::istringstream lines(messages.str());
     for (std::string line; std::getline(lines, line);)
       {
         cut_lines += line.rfind("Cut in half", 0) == 0;
         grown_lines += line.rfind("Grown", 0) == 0;
+        halved_lines += line.rfind("Halved ahead", 0) == 0;
       }
     std::cout << "; " << solved.size() << " solved, " << cut_lines
               << " cut lines";
     if (grown_lines > 0)
       std::cout << ", " << grown_lines << " grown lines";
+    if (halved_lines > 0)
+      std::cout << ", " << halved_lines << " halved lines";
     std::cout << std::endl;
   }
 } // namespace
@@ -100,4 +120,26 @@ main(int argc, char *argv[])
         "set Increment times = 0.25, 1\nset On failure = cut increment\n"
         "set Maximum cuts = 2",
         0.25);
+  // Hard increments (longer than 0.3: 10 iterations) halve the next one:
+  // 0 to 0.5 is hard, so 0.5 to 1 is tried as 0.5 to 0.75 and 0.75 to 1.
+  check("a hard increment halves the next",
+        "set Number of increments = 2\nset Hard increment iterations = 5", 10, 0.3);
+  // Halved down to the history's increment halved Maximum cuts times
+  // (0.25 of 0.5), not below: 0.75 to 1 stays whole.
+  check("halving stops at Maximum cuts",
+        "set Number of increments = 2\nset Hard increment iterations = 5\n"
+        "set Maximum cuts = 1",
+        10,
+        0.1);
+  // Shrinking and growing in turn: 0 to 0.5 is hard, so 0.5 to 1 is
+  // halved; 0.5 to 0.75 is easy, so 0.75 to 1 and 1 to 1.5 are merged;
+  // 0.75 to 1.5 is hard, so 1.5 to 2 is halved.
+  check("shrunk where hard, grown where easy",
+        "set End time = 2\nset Number of increments = 4\n"
+        "set Hard increment iterations = 5\nset Easy increment iterations = 2\n"
+        "set Grow past increment times = true",
+        10,
+        0.3);
+  check("hard not above easy",
+        "set Hard increment iterations = 2\nset Easy increment iterations = 2", 1);
 }

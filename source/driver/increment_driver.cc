@@ -40,6 +40,17 @@ namespace FrictionalContact
                       "an increment grows to twice the planned one: fewer "
                       "solves where the problem is easy, and results written "
                       "at fewer times. The last time is always kept.");
+    prm.declare_entry("Hard increment iterations",
+                      "0",
+                      Patterns::Integer(0),
+                      "After an increment whose contact solve took more "
+                      "than this many iterations, the next increment is "
+                      "halved before it is tried, down to the loading "
+                      "history's own increment halved Maximum cuts times: "
+                      "shorter increments where the solve grew hard, before "
+                      "one fails (with Easy increment iterations, they grow "
+                      "back where it is easy again). Must exceed Easy "
+                      "increment iterations. 0: never.");
     prm.leave_subsection();
   }
 
@@ -53,7 +64,15 @@ namespace FrictionalContact
     maximum_cuts   = prm.get_integer("Maximum cuts");
     easy_iterations = prm.get_integer("Easy increment iterations");
     grow_past_times = prm.get_bool("Grow past increment times");
+    hard_iterations = prm.get_integer("Hard increment iterations");
     prm.leave_subsection();
+    if (hard_iterations > 0 && hard_iterations <= easy_iterations)
+      throw InputError("<Loading/Hard increment iterations> = " +
+                       std::to_string(hard_iterations) + " is not above "
+                       "<Loading/Easy increment iterations> = " +
+                       std::to_string(easy_iterations) + ": an increment "
+                       "would be both easy and hard; raise the first or "
+                       "lower the second");
     planned_times = history->increment_times();
     end_times     = planned_times;
   }
@@ -81,6 +100,11 @@ namespace FrictionalContact
                 << " (increment " << l + 1 << " took " << iterations
                 << " iterations), now " << end_times.size() << " increments"
                 << std::endl;
+          else if (hard_iterations > 0 && iterations > hard_iterations &&
+                   halve_after(l))
+            out << "Halved ahead (increment " << l + 1 << " took "
+                << iterations << " iterations), now " << end_times.size()
+                << " increments" << std::endl;
         }
       catch (const SolverError &error)
         {
@@ -107,6 +131,26 @@ namespace FrictionalContact
     if (!grow_past_times && planned(end_times[l + 1]))
       return false;
     end_times.erase(end_times.begin() + l + 1);
+    return true;
+  }
+
+
+
+  bool
+  IncrementDriver::halve_after(const unsigned int l)
+  {
+    if (l + 1 >= end_times.size())
+      return false;
+    // The history's own increment that holds the next one.
+    const double end = end_times[l + 1];
+    const auto   planned_end =
+      std::lower_bound(planned_times.begin(), planned_times.end(), end);
+    const double planned_start =
+      planned_end == planned_times.begin() ? 0. : *(planned_end - 1);
+    const double half = (end - end_times[l]) / 2;
+    if (half < (*planned_end - planned_start) / (1u << maximum_cuts) * (1 - 1e-12))
+      return false;
+    end_times.insert(end_times.begin() + l + 1, end_times[l] + half);
     return true;
   }
 

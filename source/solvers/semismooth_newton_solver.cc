@@ -502,13 +502,19 @@ namespace FrictionalContact
 
     /// Why the linear solve of Newton iteration @p k failed, and the fix.
     inline std::string
-    linear_failure(const unsigned int k, const SolverControl::NoConvergence &e)
+    linear_failure(const unsigned int                   k,
+                   const SolverControl::NoConvergence &e,
+                   const unsigned int                   max_iterations)
     {
-      return "the linear solve of Newton iteration " + std::to_string(k + 1) +
-             " did not converge (residual " +
-             Input::scientific(e.last_residual) + " after " +
-             std::to_string(e.last_step) +
-             " iterations); raise <Linear solver/Maximum iterations>";
+      const std::string what =
+        "the linear solve of Newton iteration " + std::to_string(k + 1) +
+        " did not converge (residual " + Input::scientific(e.last_residual) +
+        " after " + std::to_string(e.last_step) + " iterations";
+      if (e.last_step >= max_iterations)
+        return what + "); raise <Linear solver/Maximum iterations>";
+      return what + ", stagnating: it fell by less than a tenth in the "
+                    "last " + std::to_string(StagnationControl::window) +
+             "); try smaller increments (Loading/On failure = cut increment)";
     }
 
     /// Why the iterations from @p first to @p k made no progress.
@@ -761,7 +767,8 @@ namespace FrictionalContact
           }
         catch (const SolverControl::NoConvergence &e)
           {
-            result.failure = linear_failure(k, e);
+            result.failure =
+              linear_failure(k, e, linear_solver.maximum_iterations());
             break;
           }
         result.linear_iterations += linear_iterations;

@@ -17,8 +17,10 @@ namespace FrictionalContact
    * Runs the loading history increment by increment: owns the end times
    * t_1 < ... < t_n of the increments and the policy for an increment that
    * fails (abort the run, or retry it as two halves, up to a number of cuts
-   * in a row) and for one that converged easily (the next two increments
-   * that cuts made, or any two if asked, merged into one). Owns the subsection "Loading".
+   * in a row), for one that converged easily (the next two increments
+   * that cuts made, or any two if asked, merged into one) and for one that
+   * converged only in many iterations (the next one halved). Owns the
+   * subsection "Loading".
    * It knows nothing of meshes or solvers: an increment is a function of
    * its number, so that the policy can be tested alone.
    */
@@ -42,7 +44,9 @@ namespace FrictionalContact
      * as does any other exception. After an increment that took at most
      * <Easy increment iterations>, the next two increments that cuts made
      * (or any two, with <Grow past increment times>) are merged into one
-     * (one line on @p out): the increment grows.
+     * (one line on @p out): the increment grows. After one that took more
+     * than <Hard increment iterations>, the next is halved (one line): the
+     * increment shrinks before an increment fails.
      */
     void
     run(const unsigned int first, const Increment &increment, std::ostream &out);
@@ -83,6 +87,12 @@ namespace FrictionalContact
     bool
     grow_after(const unsigned int l);
 
+    /// Halves increment @p l + 1 unless it would be shorter than the
+    /// loading history's own increment halved <Maximum cuts> times, or
+    /// there is none. Returns whether it did.
+    bool
+    halve_after(const unsigned int l);
+
     /// Whether @p t is one of the loading history's own end times.
     bool
     planned(const double t) const;
@@ -97,5 +107,7 @@ namespace FrictionalContact
     unsigned int        easy_iterations;
     /// See <Loading/Grow past increment times>.
     bool                grow_past_times;
+    /// See <Loading/Hard increment iterations>; 0: never.
+    unsigned int        hard_iterations;
   };
 } // namespace FrictionalContact

@@ -493,9 +493,12 @@ namespace FrictionalContact
     class StagnationControl : public SolverControl
     {
     public:
+      /// The iterations within which the residual must fall by a tenth.
+      static constexpr unsigned int window = 500;
+
       StagnationControl(const unsigned int max_steps, const double tolerance)
         : SolverControl(max_steps, tolerance, false, false)
-        , progress(500)
+        , progress(window)
       {}
 
       State
