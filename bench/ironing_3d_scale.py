@@ -16,8 +16,15 @@ this mesh in doc/benchmarks/ironing-3d-scale.csv (those of other meshes
 stay: the last run of each) and rewrites the table of doc/performance.md
 ("The 3D ironing at scale").
 
+With --hard-iterations M, an increment whose solve took more than M
+Newton steps has the next one halved (<Loading/Hard increment
+iterations>); with --folder, the runs are made there (and kept: their
+statistics files show a long run's progress) instead of in a temporary
+folder.
+
 usage: bench/ironing_3d_scale.py [--program build/contact] [--cells 72,8,24]
            [--variants "fixed point:2,fixed point:0,every Newton iterate:2"]
+           [--hard-iterations 0] [--folder DIR]
 """
 import argparse
 import csv
@@ -33,7 +40,8 @@ sys.path.insert(0, HERE)
 from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import run as run_program, solve_seconds  # noqa: E402
 
-COLUMNS = ["cells", "ranks", "d", "tool_geometry", "tangent_rebuild_factor", "increments", "cuts",
+COLUMNS = ["cells", "ranks", "d", "tool_geometry", "tangent_rebuild_factor",
+           "hard_increment_iterations", "increments", "cuts", "halved_ahead",
            "newton_iterations", "krylov_iterations", "amg_setups", "geometry_solves",
            "solve_s", "elastic_solve_s", "solve_in_elastic_solves"]
 NO_OUTPUT = ("set Output directory = output\nsubsection Postprocess\n"
@@ -75,6 +83,7 @@ def run(program, text, folder):
     return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
                 increments=len(increments),
                 cuts=len(re.findall(r"^Cut in half", output, re.M)),
+                halved_ahead=len(re.findall(r"^Halved ahead", output, re.M)),
                 newton_iterations=sum(int(n) for n, _, _ in increments),
                 krylov_iterations=sum(int(k) for _, k, _ in increments),
                 amg_setups=sum(int(a) for _, _, a in increments),
@@ -95,22 +104,31 @@ def main():
                              "solver/Tangent rebuild factor> pairs, separated by ','")
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "ironing-3d-scale.csv"))
+    parser.add_argument("--hard-iterations", type=int, default=0,
+                        help="<Loading/Hard increment iterations> (0: never)")
+    parser.add_argument("--folder", help="run here instead of in a temporary folder")
     args = parser.parse_args()
     cells = [int(n) for n in args.cells.split(",")]
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with tempfile.TemporaryDirectory() as temporary:
+        folder = args.folder or temporary
+        os.makedirs(folder, exist_ok=True)
         text = scene(folder, cells)
         unit = run(args.program, text + ELASTIC, folder)["solve_s"]
         for variant in args.variants.split(","):
             geometry, factor = variant.split(":")
-            result = run(args.program, text + "subsection Linear solver\n"
+            result = run(args.program, text + "subsection Loading\n"
+                         f"  set Hard increment iterations = {args.hard_iterations}\nend\n"
+                         "subsection Linear solver\n"
                          f"  set Tangent rebuild factor = {factor}\nend\n"
                          "subsection Contact\n  subsection Rigid tool\n"
                          f"    set Geometry at finite strain = {geometry}\n  end\nend\n",
                          folder)
             row = dict(result, cells=" x ".join(map(str, cells)), ranks=2,
                        tool_geometry=geometry,
-                       tangent_rebuild_factor=factor, elastic_solve_s=f"{unit:.3f}",
+                       tangent_rebuild_factor=factor,
+                       hard_increment_iterations=args.hard_iterations,
+                       elastic_solve_s=f"{unit:.3f}",
                        solve_in_elastic_solves=f"{result['solve_s'] / unit:.0f}")
             row["solve_s"] = f"{result['solve_s']:.1f}"
             print(", ".join(f"{k} {row[k]}" for k in COLUMNS), flush=True)
