@@ -2,6 +2,7 @@
 
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/body_response.h>
+#include <frictional_contact/model/corner_jacobians.h>
 
 #include <cmath>
 
@@ -143,6 +144,24 @@ namespace FrictionalContact
           }
         mean_dilatation += trace(strain[q]) * JxW;
         mean_volume_ratio += scratch.jacobian[q] * JxW;
+      }
+    if (scratch.finite_strain)
+      {
+        // A cell folded at a corner can have det F > 0 at its points.
+        std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell>     vertices;
+        std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> displacement;
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          {
+            vertices[a] = cell->vertex(a);
+            for (unsigned int c = 0; c < dim; ++c)
+              displacement[a][c] = scratch.u(scratch.dof[a][c]);
+          }
+        const double corner = smallest_corner_jacobian<dim>(vertices, displacement);
+        if (corner < scratch.smallest_jacobian)
+          {
+            scratch.smallest_jacobian    = corner;
+            scratch.smallest_jacobian_at = cell->center();
+          }
       }
     for (double &d : scratch.mean_divergence)
       d /= volume;

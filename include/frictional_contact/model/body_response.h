@@ -148,15 +148,17 @@ namespace FrictionalContact
       std::vector<std::vector<Tensor<1, dim>>> vertex_gradient;
       std::vector<double>                      mean_divergence;
       std::vector<MaterialResponse<dim>>       responses;
-      /// F = I + Grad u at the points of a finite-strain cell; the
-      /// smallest det F met since the scratch was made, and where.
+      /// The strains at the points.
       std::vector<SymmetricTensor<2, dim>>     strain;
       bool                                     finite_strain = false;
       /// Which volume ratio the cell's law takes
       /// (MaterialModel::volume_ratio()).
       typename MaterialModel<dim>::VolumeRatio volume_ratio =
         MaterialModel<dim>::VolumeRatio::none;
-      /// F and det F at the points of a finite-strain cell.
+      /// F = I + Grad u and det F at the points of a finite-strain cell;
+      /// the smallest det F met at the points and the vertices
+      /// (smallest_corner_jacobian()) since the scratch was made, and
+      /// where.
       std::vector<Tensor<2, dim>>              deformation_gradient;
       std::vector<double>                      jacobian;
       double                                   smallest_jacobian = 1;
