@@ -77,6 +77,19 @@ printf "include resume.prm\nsubsection Contact\n  set Friction coefficient = 0.3
 "$contact" other.prm > other.log 2>&1; code=$?
 grep -q "^Error: .*written for another scene: <Contact/Friction coefficient> was '0.5', is '0.3'" other.log \
   && [ $code -eq 1 ] || { cat other.log; fail "resuming another scene was not refused"; }
+# A checkpoint of an older program lacks the entries added since: one at
+# its default matches (a new entry keeps the results of before at its
+# default; the finished run is then found), one set otherwise is named.
+cp -r out-killed/checkpoint saved
+sed -i '/^  set Hard increment iterations/d' out-killed/checkpoint/manifest
+"$contact" resume.prm > older.log 2>&1; code=$?
+grep -q "^Error: .*is of the last increment (20 of 20)" older.log && [ $code -eq 1 ] \
+  || { cat older.log; fail "a checkpoint without a new entry at its default was refused"; }
+printf "include resume.prm\nsubsection Loading\n  set Hard increment iterations = 7\nend\n" > newer.prm
+"$contact" newer.prm > newer.log 2>&1; code=$?
+grep -q "^Error: .*written for another scene: <Loading/Hard increment iterations> was '(not there)', is '7'" newer.log \
+  && [ $code -eq 1 ] || { cat newer.log; fail "a new entry set otherwise than its default was not named"; }
+rm -rf out-killed/checkpoint; mv saved out-killed/checkpoint
 
 # ... and a damaged file, on 1 and 2 ranks, with the same line.
 for file in mesh_fixed.data mesh state; do

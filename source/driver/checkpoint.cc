@@ -64,10 +64,13 @@ namespace FrictionalContact
              key != "Contact solver/Report every";
     }
 
-    /// Empty if the checkpoint in @p directory is intact and of @p scene,
-    /// else what is wrong with it and what to do.
+    /// Empty if the checkpoint in @p directory is intact and of @p scene
+    /// (an entry it lacks matching at its value in @p defaults), else what
+    /// is wrong with it and what to do.
     std::string
-    check(const std::string &directory, const std::string &scene)
+    check(const std::string &directory,
+          const std::string &scene,
+          const std::string &defaults)
     {
       const std::string start_afresh = "; delete that folder to start afresh";
       std::ifstream manifest(directory + manifest_file);
@@ -100,15 +103,22 @@ namespace FrictionalContact
       std::getline(manifest, line);
       if (line != "scene")
         return "has a damaged manifest" + start_afresh;
-      std::istringstream current(scene);
-      const auto         then = entries(manifest), now = entries(current);
-      std::string        differences;
-      unsigned int       n_differences = 0;
+      std::istringstream current(scene), by_default(defaults);
+      const auto then = entries(manifest), now = entries(current),
+                 default_values = entries(by_default);
+      std::string  differences;
+      unsigned int n_differences = 0;
       for (const auto &[key, value] : now)
         if (changes_result(key))
           {
             const auto old = then.find(key);
-            const std::string before = old == then.end() ? "(not there)" : old->second;
+            const auto default_value = default_values.find(key);
+            const std::string before =
+              old != then.end() ? old->second :
+              default_value != default_values.end() &&
+                  default_value->second == value ?
+                                  value :
+                                  "(not there)";
             if (before != value && ++n_differences <= 4)
               differences += std::string(differences.empty() ? "" : ", ") + "<" + key +
                              "> was '" + before + "', is '" + value + "'";
@@ -242,7 +252,8 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  Checkpoint<dim>::verify(const std::string &scene) const
+  Checkpoint<dim>::verify(const std::string &scene,
+                          const std::string &defaults) const
   {
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -257,7 +268,7 @@ namespace FrictionalContact
               std::filesystem::remove_all(directory, error);
               std::filesystem::rename(directory + place, directory, error);
             }
-        problem = check(directory, scene);
+        problem = check(directory, scene, defaults);
       }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())

@@ -96,7 +96,13 @@ namespace FrictionalContact
       TimerOutput::Scope scope(*timer, "Setup");
       if (resume)
         {
-          checkpoint.verify(parameters_as_run);
+          {
+            // The defaults of this program, for entries a checkpoint of an
+            // older one lacks.
+            ParameterHandler defaults;
+            declare_parameters(defaults);
+            checkpoint.verify(parameters_as_run, printed(defaults));
+          }
           model.setup([&](auto &mesh) { checkpoint.load_mesh(mesh); });
         }
       else

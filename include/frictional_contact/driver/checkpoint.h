@@ -54,11 +54,14 @@ namespace FrictionalContact
      * Checks, before anything is loaded, that the checkpoint is there, of
      * this format, complete and unchanged (sizes and checksums), and that
      * it was written for @p scene in every entry that changes the result
-     * (all but the output entries). Every rank throws the same InputError,
-     * naming what is wrong and the entries that differ.
+     * (all but the output entries). An entry the checkpoint lacks (a
+     * program before the entry was written it) matches where @p scene has
+     * it at its value in @p defaults (the defaults, ShortPRM): a new entry
+     * keeps the results of before at its default. Every rank throws the
+     * same InputError, naming what is wrong and the entries that differ.
      */
     void
-    verify(const std::string &scene) const;
+    verify(const std::string &scene, const std::string &defaults) const;
 
     /// Refines the coarse mesh @p triangulation as it was saved.
     void
