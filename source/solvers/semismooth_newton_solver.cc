@@ -393,6 +393,9 @@ namespace FrictionalContact
       /// The force balance residuals K du - p - T r of both iterates.
       TrilinosWrappers::MPI::Vector previous_residual, residual;
       std::vector<Tensor<1, dim>>   previous_r, admissible_r;
+      /// What the last step shortened because it inverted a cell met
+      /// (InvertedCell's line; empty: none), for a stall's failure line.
+      std::string inverted_cell;
     };
 
 
@@ -450,10 +453,11 @@ namespace FrictionalContact
             problem.internal_force(du, work.K_du, /*with_tangent=*/true);
             break;
           }
-        catch (const InvertedCell &)
+        catch (const InvertedCell &e)
           {
             if (halvings == max_halvings_for_inverted_cells)
               throw;
+            work.inverted_cell = e.what();
             shorten_step(0.5, work.previous_du, work.previous_r, du, r);
           }
       work.scratch = work.K_du;
@@ -474,8 +478,9 @@ namespace FrictionalContact
             {
               problem.internal_force(work.w, work.rhs);
             }
-          catch (const InvertedCell &)
+          catch (const InvertedCell &e)
             {
+              work.inverted_cell = e.what();
               return nullptr;
             }
           work.rhs -= problem.load;
@@ -517,16 +522,25 @@ namespace FrictionalContact
              "); try smaller increments (Loading/On failure = cut increment)";
     }
 
-    /// Why the iterations from @p first to @p k made no progress.
+    /// Why the iterations from @p first to @p k made no progress; with
+    /// @p inverted_cell (InvertedCell's line) if the last step was
+    /// shortened because it inverted a cell.
     inline std::string
-    stall_failure(const unsigned int first, const unsigned int k)
+    stall_failure(const unsigned int first,
+                  const unsigned int k,
+                  const std::string &inverted_cell)
     {
-      return "no progress from Newton iteration " + std::to_string(first + 1) +
-             " to " + std::to_string(k + 1) +
-             " (the merit did not fall by a tenth in 25 steps: the stick/slip "
-             "sets keep changing, or the residuals are at round-off and "
-             "Tolerance is below it); try smaller increments, Loading/On "
-             "failure = cut increment, or Method = accelerated primal-dual";
+      const std::string what = "no progress from Newton iteration " +
+                               std::to_string(first + 1) + " to " +
+                               std::to_string(k + 1);
+      if (!inverted_cell.empty())
+        return what + ": the steps are blocked where they would invert a "
+                      "cell, " + inverted_cell;
+      return what + " (the merit did not fall by a tenth in 25 steps: the "
+                    "stick/slip sets keep changing, or the residuals are at "
+                    "round-off and Tolerance is below it); try smaller "
+                    "increments, Loading/On failure = cut increment, or "
+                    "Method = accelerated primal-dual";
     }
   } // namespace SemismoothNewton
 
@@ -773,6 +787,7 @@ namespace FrictionalContact
           }
         result.linear_iterations += linear_iterations;
 
+        work.inverted_cell.clear();
         const LineSearchStep step = search_along_step(
           problem, conditions, c, sets.c_t, friction, mean_c, du, r, work);
         // A NaN merit would accept every step (its comparisons are false).
@@ -788,7 +803,7 @@ namespace FrictionalContact
         if (progress.stalled(k, step.merit_after))
           {
             result.failure =
-              stall_failure(progress.last_progress_step(), k);
+              stall_failure(progress.last_progress_step(), k, work.inverted_cell);
             break;
           }
         if (k >= progress.last_progress_step() + steps_before_fall_back)
