@@ -379,14 +379,14 @@ def ironing_3d_scale(root):
     for r in rows(root, "ironing-3d-scale.csv"):
         factor = float(r["tangent_rebuild_factor"])
         hard = int(r["hard_increment_iterations"])
-        body.append([r["cells"], r["ranks"], thousands(r["d"]), r["tool_geometry"],
+        body.append([r["cells"], r["ranks"], thousands(r["d"]), r["end_time"], r["tool_geometry"],
                      f"after {factor:g} x the Krylov iterations" if factor > 0 else "never",
                      f"after {hard} Newton steps" if hard > 0 else "never",
                      r["increments"], r["cuts"], r["halved_ahead"], r["newton_iterations"],
                      f"{int(r['krylov_iterations']) / int(r['newton_iterations']):.1f}",
                      r["amg_setups"], r["geometry_solves"], seconds(r["solve_s"]),
                      r["solve_in_elastic_solves"]])
-    return markdown(["cells", "ranks", "d", "the tool's geometry", "AMG built again on the tangent",
+    return markdown(["cells", "ranks", "d", "to t", "the tool's geometry", "AMG built again on the tangent",
                      "next increment halved", "increments", "cuts", "halved ahead", "Newton steps", "Krylov per Newton step", "AMG set-ups",
                      "geometry solves", "solve", "solve in elastic solves"], body)
 

@@ -16,6 +16,11 @@ this mesh in doc/benchmarks/ironing-3d-scale.csv (those of other meshes
 stay: the last run of each) and rewrites the table of doc/performance.md
 ("The 3D ironing at scale").
 
+With --end-time T (< 2), the run stops there, its increments as long as
+the test's (0.1): on fine cells the last part of the slide pushes the
+material against the block's far end until a cell folds (det F = 0 at a
+corner) and the solve stalls, before t = 2 (doc/performance.md, "The 3D
+ironing at scale").
 With --hard-iterations M, an increment whose solve took more than M
 Newton steps has the next one halved (<Loading/Hard increment
 iterations>); with --folder, the runs are made there (and kept: their
@@ -24,7 +29,7 @@ folder.
 
 usage: bench/ironing_3d_scale.py [--program build/contact] [--cells 72,8,24]
            [--variants "fixed point:2,fixed point:0,every Newton iterate:2"]
-           [--hard-iterations 0] [--folder DIR]
+           [--end-time 2] [--hard-iterations 0] [--folder DIR]
 """
 import argparse
 import csv
@@ -40,7 +45,7 @@ sys.path.insert(0, HERE)
 from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import run as run_program, solve_seconds  # noqa: E402
 
-COLUMNS = ["cells", "ranks", "d", "tool_geometry", "tangent_rebuild_factor",
+COLUMNS = ["cells", "ranks", "d", "end_time", "tool_geometry", "tangent_rebuild_factor",
            "hard_increment_iterations", "increments", "cuts", "halved_ahead",
            "newton_iterations", "krylov_iterations", "amg_setups", "geometry_solves",
            "solve_s", "elastic_solve_s", "solve_in_elastic_solves"]
@@ -104,6 +109,8 @@ def main():
                              "solver/Tangent rebuild factor> pairs, separated by ','")
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "ironing-3d-scale.csv"))
+    parser.add_argument("--end-time", type=float, default=2.,
+                        help="<Loading/End time>, with increments of 0.1")
     parser.add_argument("--hard-iterations", type=int, default=0,
                         help="<Loading/Hard increment iterations> (0: never)")
     parser.add_argument("--folder", help="run here instead of in a temporary folder")
@@ -118,6 +125,8 @@ def main():
         for variant in args.variants.split(","):
             geometry, factor = variant.split(":")
             result = run(args.program, text + "subsection Loading\n"
+                         f"  set End time = {args.end_time:g}\n"
+                         f"  set Number of increments = {round(args.end_time / 0.1)}\n"
                          f"  set Hard increment iterations = {args.hard_iterations}\nend\n"
                          "subsection Linear solver\n"
                          f"  set Tangent rebuild factor = {factor}\nend\n"
@@ -125,6 +134,7 @@ def main():
                          f"    set Geometry at finite strain = {geometry}\n  end\nend\n",
                          folder)
             row = dict(result, cells=" x ".join(map(str, cells)), ranks=2,
+                       end_time=f"{args.end_time:g}",
                        tool_geometry=geometry,
                        tangent_rebuild_factor=factor,
                        hard_increment_iterations=args.hard_iterations,
