@@ -113,12 +113,11 @@ namespace FrictionalContact
           {
             const auto old = then.find(key);
             const auto default_value = default_values.find(key);
-            const std::string before =
-              old != then.end() ? old->second :
-              default_value != default_values.end() &&
-                  default_value->second == value ?
-                                  value :
-                                  "(not there)";
+            const bool at_default    = default_value != default_values.end() &&
+                                    default_value->second == value;
+            const std::string before = old != then.end() ? old->second :
+                                       at_default        ? value :
+                                                           "(not there)";
             if (before != value && ++n_differences <= 4)
               differences += std::string(differences.empty() ? "" : ", ") + "<" + key +
                              "> was '" + before + "', is '" + value + "'";

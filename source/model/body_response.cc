@@ -131,11 +131,7 @@ namespace FrictionalContact
                         0.5 * symmetrize(transpose(gradient) * gradient);
             const double jacobian = scratch.jacobian[q] =
               determinant(scratch.deformation_gradient[q]);
-            if (jacobian < scratch.smallest_jacobian)
-              {
-                scratch.smallest_jacobian    = jacobian;
-                scratch.smallest_jacobian_at = cell->center();
-              }
+            scratch.note_jacobian(jacobian, cell->center());
           }
         else
           {
@@ -156,12 +152,8 @@ namespace FrictionalContact
             for (unsigned int c = 0; c < dim; ++c)
               displacement[a][c] = scratch.u(scratch.dof[a][c]);
           }
-        const double corner = smallest_corner_jacobian<dim>(vertices, displacement);
-        if (corner < scratch.smallest_jacobian)
-          {
-            scratch.smallest_jacobian    = corner;
-            scratch.smallest_jacobian_at = cell->center();
-          }
+        scratch.note_jacobian(smallest_corner_jacobian<dim>(vertices, displacement),
+                              cell->center());
       }
     for (double &d : scratch.mean_divergence)
       d /= volume;

@@ -163,6 +163,17 @@ namespace FrictionalContact
       std::vector<double>                      jacobian;
       double                                   smallest_jacobian = 1;
       Point<dim>                               smallest_jacobian_at;
+      /// Keeps @p jacobian, met in the cell centred at @p at, if it is
+      /// the smallest so far.
+      void
+      note_jacobian(const double jacobian, const Point<dim> &at)
+      {
+        if (jacobian < smallest_jacobian)
+          {
+            smallest_jacobian    = jacobian;
+            smallest_jacobian_at = at;
+          }
+      }
       FullMatrix<double>                       matrix;
       dealii::Vector<double>                   force;
     };
