@@ -2,12 +2,12 @@
 add_test(NAME command_line/print_parameters
   COMMAND $<TARGET_FILE:contact> --print-parameters)
 set_tests_properties(command_line/print_parameters PROPERTIES
-  PASS_REGULAR_EXPRESSION "# Coulomb friction coefficient mu[^\n]*\n( *#[^\n]*\n)* *set Friction coefficient = 0\n")
+  PASS_REGULAR_EXPRESSION "# Coulomb friction coefficient mu[^\n]*\n( *#[^\n]*\n)* *set Friction coefficient *= 0\n")
 add_test(NAME command_line/print_parameters_of_scene
   COMMAND $<TARGET_FILE:contact> --print-parameters
           ${PROJECT_SOURCE_DIR}/parameters/example2.prm)
 set_tests_properties(command_line/print_parameters_of_scene PROPERTIES
-  PASS_REGULAR_EXPRESSION "set Dimension *= 3.*set Traction *= top: 0, 0, -0.005.*set Friction coefficient = 0.5")
+  PASS_REGULAR_EXPRESSION "set Dimension *= 3.*set Traction *= top: 0, 0, -0.005.*set Friction coefficient *= 0.5")
 add_test(NAME command_line/help COMMAND $<TARGET_FILE:contact> --help)
 set_tests_properties(command_line/help PROPERTIES
   PASS_REGULAR_EXPRESSION "Usage: contact \\[options\\] <parameter file>")

@@ -28,6 +28,9 @@ namespace FrictionalContact
   {
     du_in_u = 0;
     evaluate(du_in_u, true);
+    if (mortar != nullptr)
+      // The entries of the tangent at the start, for the solvers' set-up.
+      mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"), true);
     force_at_start = force;
   }
 
@@ -59,7 +62,7 @@ namespace FrictionalContact
     u_ghosted = u;
     plastic   = model.update_tangent(u_ghosted, force);
     if (mortar != nullptr)
-      mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"));
+      mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"), true);
     scale = model.get_response().element_force_norm();
     // f_int(u^l) + (f_int(u^l + eps lifting) - f_int(u^l)) / eps.
     force_at_start = force;
@@ -85,7 +88,7 @@ namespace FrictionalContact
       {
         plastic = model.update_tangent(u_ghosted, force);
         if (mortar != nullptr)
-          mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"));
+          mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"), false);
       }
     else
       plastic = model.get_response().internal_force(

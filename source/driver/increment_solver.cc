@@ -216,9 +216,12 @@ namespace FrictionalContact
                 increment->start_ghosted = start;
               }
             outcome.problem->follow_geometry =
-              [&contact = model.get_contact(), &problem = *outcome.problem, increment](
-                const TrilinosWrappers::MPI::Vector &du, std::vector<Tensor<1, dim>> &r) {
-                take_contact_geometry(contact, problem, *increment, du, r);
+              [&contact = model.get_contact(), &problem = *outcome.problem, increment,
+               mortar = mortar.get(), &load](TrilinosWrappers::MPI::Vector &du,
+                                            std::vector<Tensor<1, dim>>   &r,
+                                            TrilinosWrappers::MPI::Vector &K_du) {
+                IterateInBasis iterate{du, K_du, load};
+                take_contact_geometry(contact, problem, *increment, mortar, iterate, r);
               };
           }
         solve_contact(model, state, start, outcome, record_history, timer, warm_start);
@@ -399,24 +402,48 @@ namespace FrictionalContact
   IncrementSolver<dim>::take_contact_geometry(ContactOperator<dim>    &contact,
                                               IncrementalProblem<dim> &problem,
                                               const IncrementGeometry &increment,
-                                              const TrilinosWrappers::MPI::Vector &du,
-                                              std::vector<Tensor<1, dim>>         &r)
+                                              MortarBasis<dim>        *mortar,
+                                              const IterateInBasis    &iterate,
+                                              std::vector<Tensor<1, dim>> &r)
   {
     // The reactions keep their Cartesian direction.
     std::vector<Tensor<1, dim>> forces(r.size());
     for (unsigned int j = 0; j < r.size(); ++j)
       forces[j] = contact.to_cartesian(j, r[j]);
-    TrilinosWrappers::MPI::Vector solved = increment.start;
-    solved += du;
+    const AffineConstraints<double> &constraints = increment.body.get_constraints();
+    const bool rows_change = contact.mortar_rows_change_within_newton();
+    // The iterate in u (du is in w, which is u where no row changes).
+    TrilinosWrappers::MPI::Vector solved = iterate.du;
+    TrilinosWrappers::MPI::Vector force  = iterate.K_du;
+    if (rows_change)
+      {
+        mortar->displacement_to_u(iterate.du, solved);
+        constraints.distribute(solved);
+        mortar->force_to_u(force, iterate.K_du);
+        force = iterate.load;
+        mortar->force_to_u(force, iterate.load);
+      }
+    const TrilinosWrappers::MPI::Vector du_in_u = solved;
+    solved += increment.start;
     if (contact.follows_configuration())
       contact.follow_configuration(solved);
     if (contact.pairs_follow_within_newton())
       {
-        // du is in w, which is u here (no mortar row reaches a master).
         TrilinosWrappers::MPI::Vector ghosted = increment.body.make_ghosted_vector();
         ghosted = solved;
         contact.update_pairs(increment.body, ghosted, increment.t_start,
                              increment.t_end, &increment.start_ghosted);
+      }
+    if (rows_change)
+      {
+        // The same iterate and forces in the basis of the new rows.
+        mortar->follow_rows(increment.body, contact);
+        mortar->displacement_to_w(du_in_u, iterate.du);
+        constraints.set_zero(iterate.du);
+        force = iterate.K_du;
+        mortar->force_to_w(force, iterate.K_du);
+        force = iterate.load;
+        mortar->force_to_w(force, iterate.load);
       }
     for (unsigned int j = 0; j < r.size(); ++j)
       {

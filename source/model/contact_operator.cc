@@ -40,6 +40,20 @@ namespace FrictionalContact
                       "Coulomb friction coefficient mu (>= 0) of the "
                       "obstacle, and of the pairs that do not give their "
                       "own. 0 is frictionless contact.");
+    prm.declare_entry(
+      "Geometry between bodies",
+      "fixed point",
+      Patterns::Selection("fixed point|every Newton iterate"),
+      "How a pair of two bodies (its master not the rigid tool) follows "
+      "within an increment where a body on it is at finite strain. fixed "
+      "point: the increment solved again with the geometry where it ended "
+      "until it settles (<Pair geometry>). every Newton iterate: the "
+      "mortar segments, rows, normals and gaps taken again at every Newton "
+      "iterate and the iterate expressed in their basis, so that one solve "
+      "serves the increment; the tangent leaves out the geometry's "
+      "derivative, so the steps converge linearly while the geometry "
+      "moves (doc/performance.md, \"Finite strain against small strain\"). "
+      "Pairs with the rigid tool: <Rigid tool/Geometry at finite strain>.");
     RigidTool<dim>::declare_parameters(prm);
     prm.enter_subsection("Obstacle");
     PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
@@ -65,6 +79,8 @@ namespace FrictionalContact
     prm.enter_subsection("Contact");
     const double mu = prm.get_double("Friction coefficient");
     cones.emplace_back(mu);
+    bodies_every_newton_iterate =
+      prm.get("Geometry between bodies") == "every Newton iterate";
     tool = std::make_unique<RigidTool<dim>>(prm);
     for (const std::string &item :
          Input::split(prm.get("Contact boundaries"), ';'))
@@ -293,8 +309,8 @@ namespace FrictionalContact
             any_pair_follows |= body.get_materials().of(id).elastic().finite_strain;
       }
     for (MortarInterface<dim> &interface : interfaces)
-      interface.take_tool_frames(pairs_follow_within_newton());
-    if (pairs_follow_within_newton())
+      interface.take_tool_frames(pairs_take_tool_frames());
+    if (pairs_take_tool_frames())
       normal_gradients.assign(nodes.size(), Tensor<2, dim>());
     facing_contact =
       Utilities::MPI::compute_set_union(facing_contact, body.get_mpi_communicator());

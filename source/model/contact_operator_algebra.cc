@@ -46,7 +46,7 @@ namespace FrictionalContact
                                      std::vector<Tensor<1, dim>> &turns) const
   {
     turns.assign(nodes.size(), Tensor<1, dim>());
-    const bool pairs_turn = pairs_follow_within_newton();
+    const bool pairs_turn = pairs_take_tool_frames();
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
         const bool pair_turns = pairs_turn && nodes[j].pair >= 0 && pair_normal_lengths[j] > 0;

@@ -147,12 +147,25 @@ namespace FrictionalContact
 
   template <int dim>
   bool
-  ContactOperator<dim>::pairs_follow_within_newton() const
+  ContactOperator<dim>::pairs_take_tool_frames() const
   {
     return any_pair_follows && tool->geometry_at_every_newton_iterate() &&
            std::all_of(interfaces.begin(), interfaces.end(), [](const auto &interface) {
              return interface.has_rigid_master();
            });
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactOperator<dim>::pairs_follow_within_newton() const
+  {
+    return pairs_take_tool_frames() ||
+           (any_pair_follows && bodies_every_newton_iterate &&
+            std::any_of(interfaces.begin(), interfaces.end(), [](const auto &interface) {
+              return !interface.has_rigid_master();
+            }));
   }
 
 
@@ -193,7 +206,7 @@ namespace FrictionalContact
           nodes[j].into_obstacle = normal;
           nodes[j].area = data->weight > 0 ? data->weight : data->full_weight;
           pair_gaps[j]  = data->gap;
-          if (pairs_follow_within_newton())
+          if (pairs_take_tool_frames())
             normal_gradients[j] = data->normal_gradient;
           pair_motions[j] = data->master_motion;
           if (start == nullptr)
@@ -260,6 +273,8 @@ namespace FrictionalContact
   ContactOperator<2>::follow_configuration(const Vector &);
   template bool
   ContactOperator<2>::pairs_follow_within_newton() const;
+  template bool
+  ContactOperator<2>::pairs_take_tool_frames() const;
   template void
   ContactOperator<2>::update_pairs(const ElasticBody<2> &,
                                     const Vector &,
@@ -277,6 +292,8 @@ namespace FrictionalContact
   ContactOperator<3>::follow_configuration(const Vector &);
   template bool
   ContactOperator<3>::pairs_follow_within_newton() const;
+  template bool
+  ContactOperator<3>::pairs_take_tool_frames() const;
   template void
   ContactOperator<3>::update_pairs(const ElasticBody<3> &,
                                     const Vector &,

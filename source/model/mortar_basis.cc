@@ -1,5 +1,6 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <frictional_contact/base/input.h>
 #include <frictional_contact/model/mortar_basis.h>
 
 #include <map>
@@ -7,8 +8,9 @@
 namespace FrictionalContact
 {
   template <int dim>
-  MortarBasis<dim>::MortarBasis(const ElasticBody<dim>     &body,
-                                const ContactOperator<dim> &contact)
+  bool
+  MortarBasis<dim>::make_basis(const ElasticBody<dim>     &body,
+                               const ContactOperator<dim> &contact)
   {
     const IndexSet &owned = body.locally_owned_dofs();
     const MPI_Comm  comm  = body.get_mpi_communicator();
@@ -34,11 +36,29 @@ namespace FrictionalContact
     for (const auto &[entry, value] : E)
       basis.set(entry.first, entry.second, value);
     basis.compress(VectorOperation::insert);
+    return Utilities::MPI::sum(E.size(), comm) == 0;
+  }
 
+
+
+  template <int dim>
+  MortarBasis<dim>::MortarBasis(const ElasticBody<dim>     &body,
+                                const ContactOperator<dim> &contact)
+  {
+    const bool identity = make_basis(body, contact);
+    if (contact.mortar_rows_change_within_newton() &&
+        body.volumetric_split().reduced_stiffness != nullptr)
+      Input::fail("Contact/Geometry between bodies",
+                  "every Newton iterate",
+                  "fixed point where a body at small strain has the B-bar "
+                  "element (<Material/Formulation>): its mixed solves keep "
+                  "the basis of the increment's start");
     const TrilinosWrappers::SparseMatrix &stiffness =
       body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
     TrilinosWrappers::SparseMatrix product;
-    if (Utilities::MPI::sum(E.size(), comm) == 0) // Q = I
+    // Q = I for the whole increment: rows that change within Newton may
+    // reach a master's unknowns at the next iterate.
+    if (identity && !contact.mortar_rows_change_within_newton())
       {
         transformed_stiffness.copy_from(stiffness);
         // The tangents of nonlinear laws are made in that same matrix.
@@ -67,7 +87,8 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  MortarBasis<dim>::update_tangent(const TrilinosWrappers::SparseMatrix &tangent)
+  MortarBasis<dim>::update_tangent(const TrilinosWrappers::SparseMatrix &tangent,
+                                   const bool                            make_entries)
   {
     has_tangent = true;
     if (tangent_itself)
@@ -75,9 +96,20 @@ namespace FrictionalContact
         AssertThrow(&tangent == &tangent_itself->matrix("the tangent"), ExcInternalError());
         return;
       }
-    TrilinosWrappers::SparseMatrix product;
-    tangent.mmult(product, basis);
-    basis.Tmmult(transformed_tangent, product);
+    tangent_operator.take(tangent, make_entries);
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::follow_rows(const ElasticBody<dim>     &body,
+                                const ContactOperator<dim> &contact)
+  {
+    Assert(!tangent_itself, ExcInternalError());
+    make_basis(body, contact);
+    if (has_tangent)
+      tangent_operator.take(body.stiffness().matrix("contact pairs"), false);
   }
 
 

@@ -711,7 +711,7 @@ namespace FrictionalContact
         // and its residuals with them.
         if (k > 0 && problem.follow_geometry)
           {
-            problem.follow_geometry(du, r);
+            problem.follow_geometry(du, r, work.K_du);
             contact.apply(r, work.T_r);
             result.residuals = admissible_residuals(
               problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);

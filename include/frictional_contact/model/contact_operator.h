@@ -106,15 +106,31 @@ namespace FrictionalContact
 
     /**
      * Whether the pairs' geometry is taken again at every Newton iterate
-     * (update_pairs() with the increment's start), in the tool's frames:
-     * when a body at finite strain is on a pair, every pair's master is the
-     * rigid tool, and <Rigid tool/Geometry at finite strain> asks for it.
-     * The mortar rows then reach no unknown of a master (MortarBasis is
-     * the identity), so the basis the increment was solved in stays valid
-     * as the geometry moves.
+     * (update_pairs() with the increment's start): where a body at finite
+     * strain is on a pair, in the tool's frames (pairs_take_tool_frames()),
+     * or where <Geometry between bodies> asks for it for pairs of two
+     * bodies, whose mortar rows then change within Newton
+     * (mortar_rows_change_within_newton()).
      */
     bool
     pairs_follow_within_newton() const;
+
+    /**
+     * Whether the pairs within Newton take the tool's frames: every pair's
+     * master is the rigid tool and <Rigid tool/Geometry at finite strain>
+     * asks for it. The mortar rows then reach no unknown of a master
+     * (MortarBasis is the identity).
+     */
+    bool
+    pairs_take_tool_frames() const;
+
+    /// Whether the rows P_jl of a pair with a deformable master are taken
+    /// again at every Newton iterate: the basis u = Q w changes with them.
+    bool
+    mortar_rows_change_within_newton() const
+    {
+      return pairs_follow_within_newton() && !pairs_take_tool_frames();
+    }
 
     /**
      * The prescribed tangential motion over the increment of what node j
@@ -185,7 +201,7 @@ namespace FrictionalContact
     bool
     frames_follow_configuration() const override
     {
-      return any_follows || pairs_follow_within_newton();
+      return any_follows || pairs_take_tool_frames();
     }
 
     /**
@@ -588,7 +604,7 @@ namespace FrictionalContact
     std::vector<double>                          followed_gaps;
     std::vector<Tensor<1, dim>>                  followed_displacements;
     /// The gradient of the outward normal of what the node touches there
-    /// (the obstacle's, or the tool's where the pairs follow within Newton).
+    /// (the obstacle's, or the tool's where the pairs take its frames).
     std::vector<Tensor<2, dim>>                  normal_gradients;
     /// For each pair's slave node, the length of its unit normal with the
     /// fixed components left out (1 where none is fixed): the scale of its
@@ -598,6 +614,8 @@ namespace FrictionalContact
     mutable std::vector<Tensor<1, dim>>          turns_scratch;
     bool                                         any_follows = false;
     bool                                         any_pair_follows = false;
+    /// <Geometry between bodies> is every Newton iterate.
+    bool                                         bodies_every_newton_iterate = false;
     PairChange                                   pair_change;
     std::unique_ptr<TimeFunction>                rigid_displacement;
     Tensor<1, dim>                               obstacle_shift;

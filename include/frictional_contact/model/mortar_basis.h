@@ -6,6 +6,7 @@
 #include <frictional_contact/solvers/stiffness_operator.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
+#include <frictional_contact/model/mortar_tangent.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
 #include <memory>
@@ -24,7 +25,8 @@ namespace FrictionalContact
    * p_w = Q^T p. Master dofs held by hanging nodes are replaced by the dofs
    * they hang from; fixed and prescribed ones drop out (their increment is
    * in the lifting). Built anew at each increment, from the contact
-   * operator's mortar rows. Owns Q and the transformed matrices.
+   * operator's mortar rows, and within it where they change at every
+   * Newton iterate. Owns Q and the transformed matrices.
    */
   template <int dim>
   class MortarBasis
@@ -42,7 +44,9 @@ namespace FrictionalContact
     {
       if (!has_tangent)
         return transformed_operator;
-      return tangent_itself ? *tangent_itself : tangent_operator;
+      if (tangent_itself)
+        return *tangent_itself;
+      return tangent_operator;
     }
 
     /// Q^T K Q of the body's stiffness matrix as it was when the basis was
@@ -54,11 +58,14 @@ namespace FrictionalContact
       return transformed_operator;
     }
 
-    /// K_T,w = Q^T K_T Q for the tangent @p tangent of nonlinear laws; from
-    /// then on stiffness(). Where Q = I, @p tangent itself, which must be
-    /// the body's matrix the basis was made from (not copied).
+    /// K_T,w = Q^T K_T Q for the tangent @p tangent of nonlinear laws (by
+    /// reference), as an operator (MortarTangent); from then on
+    /// stiffness(). With @p make_entries (collective) also its entries,
+    /// which the solvers' set-up at an increment's start reads. Where
+    /// Q = I, @p tangent itself, which must be the body's matrix the basis
+    /// was made from (not copied).
     void
-    update_tangent(const TrilinosWrappers::SparseMatrix &tangent);
+    update_tangent(const TrilinosWrappers::SparseMatrix &tangent, const bool make_entries);
 
     /// The body's volumetric split in w (A_w = Q^T A Q, B_w = B Q), empty
     /// if the body has none.
@@ -88,13 +95,27 @@ namespace FrictionalContact
     std::vector<std::vector<double>>
     modes_to_w(const std::vector<std::vector<double>> &modes) const;
 
+    /**
+     * Q anew from the mortar rows of @p contact as they are now (within an
+     * increment, contact.mortar_rows_change_within_newton()); K_T,w
+     * follows it (without entries). K_w stays as the basis was made
+     * (preconditioners hold it). A vector in w is to be taken to u with
+     * the old basis before, and back with the new one after.
+     */
+    void
+    follow_rows(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
+
   private:
+    /// Q from the mortar rows of @p contact; whether Q = I (no mortar
+    /// row reaches a master's unknown).
+    bool
+    make_basis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
+
     TrilinosWrappers::SparseMatrix basis;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};
-    TrilinosWrappers::SparseMatrix transformed_tangent;
-    AssembledStiffness             tangent_operator{transformed_tangent};
+    MortarTangent                  tangent_operator{basis};
     bool                           has_tangent = false;
     /// Where Q = I (no mortar row reaches a master dof: every master is a
     /// rigid tool), K_T,w is the tangent itself, made in the body's

@@ -97,12 +97,16 @@ namespace FrictionalContact
     double tolerance = 0;
     /**
      * Where the frames follow the configuration (finite strain against a
-     * curved obstacle): takes the gaps, frames and obstacle_slip of the
-     * contact at the iterate du, and expresses the reactions r in the new
-     * frames. Empty for fixed frames.
+     * curved obstacle, or contact pairs): takes the gaps, frames and
+     * obstacle_slip of the contact at the iterate du, and expresses the
+     * reactions r in the new frames; where the unknowns' basis changes
+     * with the geometry (mortar rows of two bodies), also du, K du (@p
+     * K_du, N(du) for nonlinear laws) and the load in the new basis.
+     * Empty for fixed frames.
      */
-    std::function<void(const TrilinosWrappers::MPI::Vector &du,
-                       std::vector<Tensor<1, dim>>         &r)>
+    std::function<void(TrilinosWrappers::MPI::Vector &du,
+                       std::vector<Tensor<1, dim>>   &r,
+                       TrilinosWrappers::MPI::Vector &K_du)>
       follow_geometry;
 
     /// K du, or N(du) for nonlinear laws (then with @p with_tangent also

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <frictional_contact/solvers/stiffness_operator.h>
+
+namespace FrictionalContact
+{
+  /**
+   * The tangent of nonlinear laws in the basis u = Q w of contact pairs,
+   * K_T,w = Q^T K_T Q, as the Newton solves use it: its products are those
+   * of Q, K_T and Q^T in turn, so that a Newton step's new tangent (or new
+   * Q, where the mortar rows follow the iterates) costs no matrix-matrix
+   * product. Its entries (diagonal, node blocks, the matrix) are those of
+   * the explicit product, made on request at an increment's start, where
+   * the solvers' set-up reads them; asked for after the tangent changed
+   * without them, it throws. Owns that product and two work vectors.
+   */
+  class MortarTangent : public StiffnessOperator
+  {
+  public:
+    /// The operator of @p basis (Q, kept by reference) and a tangent
+    /// given by take().
+    explicit MortarTangent(const TrilinosWrappers::SparseMatrix &basis)
+      : basis(basis)
+    {}
+
+    /// K_T (kept by reference) with Q as it is now; with @p make_entries
+    /// also the explicit product (collective).
+    void
+    take(const TrilinosWrappers::SparseMatrix &tangent, const bool make_entries);
+
+    void
+    vmult(Vector &dst, const Vector &src) const override;
+
+    double
+    diag_element(const types::global_dof_index i) const override;
+
+    std::vector<FullMatrix<double>>
+    blocks(const std::vector<std::vector<types::global_dof_index>> &nodes) const override;
+
+    IndexSet
+    locally_owned_domain_indices() const override
+    {
+      return basis.locally_owned_domain_indices();
+    }
+
+    MPI_Comm
+    get_mpi_communicator() const override
+    {
+      return basis.get_mpi_communicator();
+    }
+
+    bool
+    is_assembled() const override
+    {
+      return true;
+    }
+
+    const TrilinosWrappers::SparseMatrix &
+    matrix(const std::string &purpose) const override;
+
+  private:
+    /// The explicit product, or an internal error naming @p what where
+    /// the tangent changed since it was made.
+    const TrilinosWrappers::SparseMatrix &
+    entries(const std::string &what) const;
+
+    const TrilinosWrappers::SparseMatrix &basis;
+    const TrilinosWrappers::SparseMatrix *tangent = nullptr;
+    TrilinosWrappers::SparseMatrix        product;
+    bool                                  entries_current = false;
+    /// Q src and K_T Q src.
+    mutable Vector in_u, force_in_u;
+  };
+} // namespace FrictionalContact
