@@ -589,6 +589,18 @@ foreach(_case pair_rotation_mu_0:pair_rotation:0:1e-7:fixed_point
             ${_directory}/output-${_scene} --tolerance ${_tolerance})
   set_tests_properties(${_name}.objective PROPERTIES FIXTURES_REQUIRED ${_name})
 endforeach()
+# The basis that follows the iterates (MortarBasis::follow_rows,
+# MortarTangent) under AddressSanitizer, on 2 ranks.
+set(_directory ${CMAKE_CURRENT_BINARY_DIR}/pair_rotation_newton_sanitized)
+file(MAKE_DIRECTORY ${_directory})
+add_test(NAME pair_rotation_newton.sanitized.mpirun=2
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
+          $<TARGET_FILE:contact_sanitized>
+          ${CMAKE_CURRENT_BINARY_DIR}/pair_rotation_newton_mu_0.3/pair_rotation.prm 2 --sanitized
+  WORKING_DIRECTORY ${_directory})
+set_tests_properties(pair_rotation_newton.sanitized.mpirun=2 PROPERTIES
+  FIXTURES_REQUIRED sanitized_program ENVIRONMENT "${_environment}"
+  PROCESSORS 2 TIMEOUT 600)
 
 # Increments grown past the loading history's times on the O-ring: fewer
 # increments, the same end state (grown_increments.sh).
