@@ -264,8 +264,7 @@ namespace FrictionalContact
   {
     const MPI_Comm  comm     = body.get_mpi_communicator();
     const IndexSet &owned    = body.locally_owned_dofs();
-    const IndexSet  relevant =
-      DoFTools::extract_locally_relevant_dofs(body.get_dof_handler());
+    const IndexSet &relevant = body.locally_relevant_dofs();
     // The master faces in the current configuration: the body's of every
     // rank, or the tool's where it stands at t_end (and where it stood).
     std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>> masters;
@@ -414,8 +413,7 @@ namespace FrictionalContact
         finish_rigid_rows(normal_sum, lumped_sum, rigid, gap_displacement);
       }
     else
-      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex,
-                  gap_displacement, relevant, comm);
+      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, gap_displacement, comm);
   }
 
 
@@ -483,31 +481,45 @@ namespace FrictionalContact
       &M_entries,
     const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> &master_vertex,
     const Vector   &u_ghosted,
-    const IndexSet &relevant,
     const MPI_Comm  comm)
   {
     // The rows of M, summed over the ranks: rows are the slave vertices' x
-    // dofs, columns the master vertices'.
-    const IndexSet                   &owned = normal_sum.locally_owned_elements();
-    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+    // dofs, columns the master vertices'. A row this rank does not own goes
+    // to its owner (the entries are few: a matrix of all of the body's rows
+    // cost more than the rest of the update).
+    const IndexSet &owned = normal_sum.locally_owned_elements();
+    IndexSet        rows_here(owned.size());
     for (const auto &[entry, value] : M_entries)
-      pattern.add(entry.first, entry.second);
-    pattern.compress();
-    TrilinosWrappers::SparseMatrix M(pattern);
+      rows_here.add_index(entry.first);
+    rows_here.compress();
+    const std::vector<unsigned int> owners =
+      Utilities::MPI::compute_index_owner(owned, rows_here, comm);
+    const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
+    std::map<unsigned int, std::vector<MortarEntry>>           to_owners;
+    std::map<types::global_dof_index, std::map<types::global_dof_index, double>> rows;
     for (const auto &[entry, value] : M_entries)
-      M.add(entry.first, entry.second, value);
-    M.compress(VectorOperation::add);
+      {
+        const unsigned int owner = owners[rows_here.index_within_set(entry.first)];
+        if (owner == this_rank)
+          rows[entry.first][entry.second] += value;
+        else
+          to_owners[owner].push_back({entry.first, entry.second, value});
+      }
+    for (const auto &[rank, entries] : Utilities::MPI::some_to_some(comm, to_owners))
+      for (const MortarEntry &entry : entries)
+        rows[entry.row][entry.column] += entry.value;
 
     for (auto &[dof, node] : nodes)
       {
         const Point<dim> position = start_node(dof, normal_sum, lumped_sum, u_ghosted);
         std::vector<std::pair<types::global_dof_index, double>> row;
-        for (auto entry = M.begin(dof); entry != M.end(dof); ++entry)
-          if (entry->value() != 0)
-            {
-              row.emplace_back(entry->column(), entry->value());
-              node.weight += entry->value();
-            }
+        if (const auto found = rows.find(dof); found != rows.end())
+          for (const auto &[column, value] : found->second)
+            if (value != 0)
+              {
+                row.emplace_back(column, value);
+                node.weight += value;
+              }
         if (!covered(node))
           continue;
         for (const auto &[column, m] : row)

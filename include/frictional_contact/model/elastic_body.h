@@ -239,6 +239,13 @@ namespace FrictionalContact
       return owned_dofs;
     }
 
+    /// The dofs of this rank's cells and their neighbours' (ghosts).
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return relevant_dofs;
+    }
+
     MPI_Comm
     get_mpi_communicator() const
     {

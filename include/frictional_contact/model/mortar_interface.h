@@ -257,8 +257,21 @@ namespace FrictionalContact
       const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>>
                      &master_vertex,
       const Vector   &u_ghosted,
-      const IndexSet &relevant,
       const MPI_Comm  comm);
+
+    /// An entry of M on its way to the rank that owns its row.
+    struct MortarEntry
+    {
+      types::global_dof_index row, column;
+      double                  value;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &row &column &value;
+      }
+    };
 
     /// The gaps and tool motions of a rigid master, from its row sums.
     void
