@@ -413,17 +413,17 @@ namespace FrictionalContact
     const AffineConstraints<double> &constraints = increment.body.get_constraints();
     const bool rows_change = contact.mortar_rows_change_within_newton();
     // The iterate in u (du is in w, which is u where no row changes).
-    TrilinosWrappers::MPI::Vector solved = iterate.du;
-    TrilinosWrappers::MPI::Vector force  = iterate.K_du;
+    TrilinosWrappers::MPI::Vector du_in_u = iterate.du, force;
     if (rows_change)
       {
-        mortar->displacement_to_u(iterate.du, solved);
-        constraints.distribute(solved);
+        mortar->displacement_to_u(iterate.du, du_in_u);
+        constraints.distribute(du_in_u);
+        force = iterate.K_du;
         mortar->force_to_u(force, iterate.K_du);
         force = iterate.load;
         mortar->force_to_u(force, iterate.load);
       }
-    const TrilinosWrappers::MPI::Vector du_in_u = solved;
+    TrilinosWrappers::MPI::Vector solved = du_in_u;
     solved += increment.start;
     if (contact.follows_configuration())
       contact.follow_configuration(solved);

@@ -55,7 +55,6 @@ namespace FrictionalContact
                   "the basis of the increment's start");
     const TrilinosWrappers::SparseMatrix &stiffness =
       body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
-    TrilinosWrappers::SparseMatrix product;
     // Q = I for the whole increment: rows that change within Newton may
     // reach a master's unknowns at the next iterate.
     if (identity && !contact.mortar_rows_change_within_newton())
@@ -65,16 +64,12 @@ namespace FrictionalContact
         tangent_itself = std::make_unique<AssembledStiffness>(stiffness);
       }
     else
-      {
-        stiffness.mmult(product, basis);
-        basis.Tmmult(transformed_stiffness, product);
-      }
+      transform_to_basis(basis, stiffness, transformed_stiffness);
 
     const VolumetricSplit volumetric = body.volumetric_split();
     if (volumetric.reduced_stiffness != nullptr)
       {
-        volumetric.reduced_stiffness->mmult(product, basis);
-        basis.Tmmult(transformed_reduced_stiffness, product);
+        transform_to_basis(basis, *volumetric.reduced_stiffness, transformed_reduced_stiffness);
         volumetric.divergence->mmult(transformed_divergence, basis);
         split                    = volumetric;
         split.reduced_stiffness  = &transformed_reduced_stiffness;

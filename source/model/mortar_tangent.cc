@@ -3,16 +3,25 @@
 namespace FrictionalContact
 {
   void
+  transform_to_basis(const TrilinosWrappers::SparseMatrix &basis,
+                     const TrilinosWrappers::SparseMatrix &A,
+                     TrilinosWrappers::SparseMatrix       &result)
+  {
+    TrilinosWrappers::SparseMatrix A_times_basis;
+    A.mmult(A_times_basis, basis);
+    basis.Tmmult(result, A_times_basis);
+  }
+
+
+
+  void
   MortarTangent::take(const TrilinosWrappers::SparseMatrix &new_tangent,
                       const bool                            make_entries)
   {
     tangent         = &new_tangent;
     entries_current = make_entries;
-    if (!make_entries)
-      return;
-    TrilinosWrappers::SparseMatrix tangent_times_basis;
-    tangent->mmult(tangent_times_basis, basis);
-    basis.Tmmult(product, tangent_times_basis);
+    if (make_entries)
+      transform_to_basis(basis, *tangent, product);
   }
 
 

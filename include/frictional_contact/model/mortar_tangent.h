@@ -7,6 +7,12 @@
 
 namespace FrictionalContact
 {
+  /// @p result = Q^T A Q for the basis @p basis (Q) of contact pairs.
+  void
+  transform_to_basis(const TrilinosWrappers::SparseMatrix &basis,
+                     const TrilinosWrappers::SparseMatrix &A,
+                     TrilinosWrappers::SparseMatrix       &result);
+
   /**
    * The tangent of nonlinear laws in the basis u = Q w of contact pairs,
    * K_T,w = Q^T K_T Q, as the Newton solves use it: its products are those
