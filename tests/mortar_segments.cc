@@ -5,7 +5,9 @@
 // quads against a master in 3 x 3, where everything is the tensor product of
 // the 2D values; then the properties every interface must have: the dual
 // basis is biorthogonal on a trapezoid, and on a distorted master the rows of
-// M add up to D (constants) and reproduce the first moments (linear fields).
+// M add up to D (constants) and reproduce the first moments (linear fields);
+// and the derivatives of M as the slave slides along the master agree with
+// its differences.
 #include <frictional_contact/model/mortar_segments.h>
 
 #include <cmath>
@@ -21,8 +23,9 @@ namespace
   template <int dim>
   struct Assembled
   {
-    std::vector<double>              D;
-    std::vector<std::vector<double>> M;
+    std::vector<double>                              D;
+    std::vector<std::vector<double>>                 M;
+    std::vector<std::vector<Tensor<1, dim>>>         slide;
   };
 
   template <int dim>
@@ -36,18 +39,52 @@ namespace
     Assembled<dim> result;
     result.D.assign(n_slave, 0.);
     result.M.assign(n_slave, std::vector<double>(n_master, 0.));
+    result.slide.assign(n_slave, std::vector<Tensor<1, dim>>(n_master));
     for (const auto &[s, s_nodes] : slave)
       for (const auto &[m, m_nodes] : master)
         {
-          const Table<2, double> M = face_integrals<dim>(s, normal, m);
+          const FaceIntegrals<dim> integrals = face_integrals<dim>(s, normal, m);
           for (unsigned int a = 0; a < s_nodes.size(); ++a)
             for (unsigned int b = 0; b < m_nodes.size(); ++b)
               {
-                result.M[s_nodes[a]][m_nodes[b]] += M(a, b);
-                result.D[s_nodes[a]] += M(a, b);
+                result.M[s_nodes[a]][m_nodes[b]] += integrals.M(a, b);
+                result.slide[s_nodes[a]][m_nodes[b]] += integrals.slide(a, b);
+                result.D[s_nodes[a]] += integrals.M(a, b);
               }
         }
     return result;
+  }
+
+  /// The largest difference between the slide derivatives of the slave
+  /// nodes @p slave_nodes against @p master and central differences of M
+  /// as the whole slave slides by +-1e-6 along @p direction.
+  template <int dim, typename MakeFaces, typename Faces>
+  double
+  slide_error(const std::vector<Point<dim>> &slave_nodes,
+              const MakeFaces               &make_slave,
+              const Faces                   &master,
+              const unsigned int             n_master,
+              const Tensor<1, dim>          &normal,
+              const Tensor<1, dim>          &direction)
+  {
+    const double epsilon = 1e-6;
+    const unsigned int n = slave_nodes.size();
+    std::vector<Point<dim>> ahead = slave_nodes, behind = slave_nodes;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        ahead[j] += epsilon * direction;
+        behind[j] -= epsilon * direction;
+      }
+    const Assembled<dim> at     = assemble<dim>(make_slave(slave_nodes), master, n, n_master, normal);
+    const Assembled<dim> plus   = assemble<dim>(make_slave(ahead), master, n, n_master, normal);
+    const Assembled<dim> minus  = assemble<dim>(make_slave(behind), master, n, n_master, normal);
+    double error = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      for (unsigned int l = 0; l < n_master; ++l)
+        error = std::max(error,
+                         std::abs((plus.M[j][l] - minus.M[j][l]) / (2 * epsilon) -
+                                  at.slide[j][l] * direction));
+    return error;
   }
 
   /// Segments of a line at height y through the given x positions.
@@ -243,5 +280,52 @@ main()
   report("3D, distorted master: the rows of M add up to D", error_rows, 1e-14);
   report("3D, distorted master: sum_l M_jl y_l = D_jj x_j (linear fields)",
          error_moments, 1e-14);
+
+  // The slide derivatives (what the pairs' Newton tangent takes of the rows
+  // moving along the master) against differences of M, for a slave inside
+  // the master (so that the part covered does not change): the tilted 2D
+  // master along x, the distorted 3D master along x and along a diagonal.
+  {
+    const std::vector<double> inner = {0.1, 0.45, 0.9};
+    std::vector<Point<2>>     line_nodes;
+    for (const double x : inner)
+      line_nodes.emplace_back(x, 0.);
+    const auto line_of = [](const std::vector<Point<2>> &nodes) {
+      std::vector<double> x, y;
+      for (const Point<2> &p : nodes)
+        {
+          x.push_back(p[0]);
+          y.push_back(p[1]);
+        }
+      return line(x, y);
+    };
+    const double error_2d = slide_error<2>(
+      line_nodes, line_of, line(xm, ym), 4, up, Tensor<1, 2>({1., 0.}));
+    report("2D: the slide derivatives of M are its differences", error_2d, 1e-8);
+
+    std::vector<Point<3>> square_nodes;
+    for (unsigned int j = 0; j <= 2; ++j)
+      for (unsigned int i = 0; i <= 2; ++i)
+        square_nodes.emplace_back(0.1 + 0.37 * i, 0.12 + 0.4 * j, 0.);
+    const auto square_of = [](const std::vector<Point<3>> &nodes) {
+      std::vector<Point<3>> copy = nodes;
+      return grid(2, 0., copy);
+    };
+    // On the distorted master the 7-point rule is not exact (the master's
+    // shape functions are not polynomial on the overlap), and its error
+    // moves with the overlap's vertices: differences and derivatives agree
+    // to that error (the entries are about 0.3).
+    double error_flat = 0, error_distorted = 0;
+    for (const Tensor<1, 3> &direction :
+         {Tensor<1, 3>({1., 0., 0.}), Tensor<1, 3>({0.6, 0.8, 0.})})
+      {
+        error_flat = std::max(
+          error_flat, slide_error<3>(square_nodes, square_of, master_faces, 16, normal, direction));
+        error_distorted = std::max(
+          error_distorted, slide_error<3>(square_nodes, square_of, distorted, 16, normal, direction));
+      }
+    report("3D: the slide derivatives of M are its differences", error_flat, 1e-9);
+    report("3D, distorted master: the same to the quadrature's error", error_distorted, 1e-5);
+  }
   return 0;
 }

@@ -118,7 +118,10 @@ namespace FrictionalContact
         force -= force_at_start;
       }
     if (mortar != nullptr)
-      mortar->force_to_w(force, dst);
+      {
+        mortar->force_to_w(force, dst);
+        mortar->add_sliding_change(du, dst, 1.);
+      }
     else
       dst = force;
   }

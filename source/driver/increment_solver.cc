@@ -416,6 +416,8 @@ namespace FrictionalContact
     TrilinosWrappers::MPI::Vector du_in_u = iterate.du, force;
     if (rows_change)
       {
+        // K du as the law gives it (without the rows' predicted sliding).
+        mortar->add_sliding_change(iterate.du, iterate.K_du, -1.);
         mortar->displacement_to_u(iterate.du, du_in_u);
         constraints.distribute(du_in_u);
         force = iterate.K_du;
@@ -440,6 +442,7 @@ namespace FrictionalContact
         mortar->follow_rows(increment.body, contact);
         mortar->displacement_to_w(du_in_u, iterate.du);
         constraints.set_zero(iterate.du);
+        mortar->follow_reactions(increment.body, contact, forces, iterate.du);
         force = iterate.K_du;
         mortar->force_to_w(force, iterate.K_du);
         force = iterate.load;

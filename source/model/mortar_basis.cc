@@ -111,6 +111,52 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  MortarBasis<dim>::follow_reactions(const ElasticBody<dim>            &body,
+                                     const ContactOperator<dim>        &contact,
+                                     const std::vector<Tensor<1, dim>> &forces,
+                                     const Vector                      &iterate)
+  {
+    if (!has_tangent || tangent_itself)
+      return;
+    const IndexSet &owned = body.locally_owned_dofs();
+    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> H;
+    contact.for_each_sliding_coupling(forces, [&](const types::global_dof_index slave,
+                                                  const types::global_dof_index master,
+                                                  const double                  value) {
+      H[{slave, master}] += value;
+    });
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, body.get_mpi_communicator());
+    for (const auto &[entry, value] : H)
+      pattern.add(entry.first, entry.second);
+    pattern.compress();
+    sliding.reinit(pattern);
+    for (const auto &[entry, value] : H)
+      sliding.set(entry.first, entry.second, value);
+    sliding.compress(VectorOperation::insert);
+    tangent_operator.take_sliding(&sliding);
+    sliding_origin = iterate;
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::add_sliding_change(const Vector &w,
+                                       Vector       &force_w,
+                                       const double  sign) const
+  {
+    if (sliding_origin.size() == 0)
+      return;
+    slide = w;
+    slide -= sliding_origin;
+    slide *= sign;
+    sliding.Tvmult_add(force_w, slide);
+  }
+
+
+
+  template <int dim>
+  void
   MortarBasis<dim>::force_to_w(const Vector &force, Vector &force_w) const
   {
     basis.Tvmult(force_w, force);

@@ -330,7 +330,7 @@ namespace FrictionalContact
           tool_gradients.push_back(
             MortarSegments::normal_gradient<dim>(masters[m].first, tool_normals[m]));
       }
-    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> M_entries;
+    RowEntries M_entries;
     for (const Face &face : slave_faces)
       if (face.owned_cell)
         {
@@ -369,8 +369,9 @@ namespace FrictionalContact
                 tool_frames ? std::clamp((facing - 0.5) / (std::sqrt(0.75) - 0.5), 0., 1.) : 1.;
               if (fade == 0)
                 continue;
-              Table<2, double> M = MortarSegments::face_integrals<dim>(
+              MortarSegments::FaceIntegrals<dim> integrals = MortarSegments::face_integrals<dim>(
                 x, tool_frames ? master_normal : normal, y);
+              Table<2, double> &M = integrals.M;
               if (fade < 1)
                 for (unsigned int a = 0; a < n_face_vertices; ++a)
                   for (unsigned int b = 0; b < n_face_vertices; ++b)
@@ -381,7 +382,9 @@ namespace FrictionalContact
                     continue;
                   else if (master != nullptr)
                     to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
-                      M_entries[{dof, master->dofs[b][0]}] += w * M(a, b);
+                      RowEntry &entry = M_entries[{dof, master->dofs[b][0]}];
+                      entry.value += w * M(a, b);
+                      entry.slide += w * integrals.slide(a, b);
                     });
                   else
                     {
@@ -475,10 +478,9 @@ namespace FrictionalContact
   template <int dim>
   void
   MortarInterface<dim>::finish_rows(
-    const Vector &normal_sum,
-    const Vector &lumped_sum,
-    const std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>
-      &M_entries,
+    const Vector     &normal_sum,
+    const Vector     &lumped_sum,
+    const RowEntries &M_entries,
     const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> &master_vertex,
     const Vector   &u_ghosted,
     const MPI_Comm  comm)
@@ -496,37 +498,45 @@ namespace FrictionalContact
       Utilities::MPI::compute_index_owner(owned, rows_here, comm);
     const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
     std::map<unsigned int, std::vector<MortarEntry>>           to_owners;
-    std::map<types::global_dof_index, std::map<types::global_dof_index, double>> rows;
-    for (const auto &[entry, value] : M_entries)
+    std::map<types::global_dof_index, std::map<types::global_dof_index, RowEntry>> rows;
+    const auto add = [&rows](const types::global_dof_index row,
+                             const types::global_dof_index column,
+                             const RowEntry               &entry) {
+      RowEntry &sum = rows[row][column];
+      sum.value += entry.value;
+      sum.slide += entry.slide;
+    };
+    for (const auto &[position, entry] : M_entries)
       {
-        const unsigned int owner = owners[rows_here.index_within_set(entry.first)];
+        const unsigned int owner = owners[rows_here.index_within_set(position.first)];
         if (owner == this_rank)
-          rows[entry.first][entry.second] += value;
+          add(position.first, position.second, entry);
         else
-          to_owners[owner].push_back({entry.first, entry.second, value});
+          to_owners[owner].push_back({position.first, position.second, entry});
       }
     for (const auto &[rank, entries] : Utilities::MPI::some_to_some(comm, to_owners))
       for (const MortarEntry &entry : entries)
-        rows[entry.row][entry.column] += entry.value;
+        add(entry.row, entry.column, entry.entry);
 
     for (auto &[dof, node] : nodes)
       {
         const Point<dim> position = start_node(dof, normal_sum, lumped_sum, u_ghosted);
-        std::vector<std::pair<types::global_dof_index, double>> row;
+        std::vector<std::pair<types::global_dof_index, RowEntry>> row;
         if (const auto found = rows.find(dof); found != rows.end())
-          for (const auto &[column, value] : found->second)
-            if (value != 0)
+          for (const auto &[column, entry] : found->second)
+            if (entry.value != 0)
               {
-                row.emplace_back(column, value);
-                node.weight += value;
+                row.emplace_back(column, entry);
+                node.weight += entry.value;
               }
         if (!covered(node))
           continue;
-        for (const auto &[column, m] : row)
+        for (const auto &[column, entry] : row)
           {
             const auto &[master_dofs, master_position] = master_vertex.at(column);
-            const double p = m / node.weight;
+            const double p = entry.value / node.weight;
             node.masters.emplace_back(master_dofs, p);
+            node.master_slides.push_back(entry.slide / node.weight);
             node.gap += p * (node.normal * (master_position - position));
             node.offset += p * (master_position - position);
           }

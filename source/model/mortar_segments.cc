@@ -47,9 +47,13 @@ namespace FrictionalContact
       }
 
       /// The face coordinates of the point of @p v that @p X projects to
-      /// along @p n (Newton on x(xi) + alpha n = X), clamped to [0, 1]^2.
+      /// along @p n (Newton on x(xi) + alpha n = X), clamped to [0, 1]^2;
+      /// with @p gradient also d xi_k / d X (zero where xi_k is clamped).
       Point<2>
-      inverse_map(const FaceVertices<3> &v, const Point<3> &X, const Tensor<1, 3> &n)
+      inverse_map(const FaceVertices<3>        &v,
+                  const Point<3>               &X,
+                  const Tensor<1, 3>           &n,
+                  std::array<Tensor<1, 3>, 2> *gradient = nullptr)
       {
         Point<2> xi(0.5, 0.5);
         double   alpha = 0;
@@ -72,6 +76,21 @@ namespace FrictionalContact
             alpha -= step[2];
             if (std::abs(step[0]) + std::abs(step[1]) < 1e-15)
               break;
+          }
+        if (gradient != nullptr)
+          {
+            // The rows of the inverse of the Jacobian (t0, t1, n).
+            const Tensor<1, 3> t0 = face_tangent(v, xi, 0), t1 = face_tangent(v, xi, 1);
+            Tensor<2, 3>       J;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                J[c][0] = t0[c];
+                J[c][1] = t1[c];
+                J[c][2] = n[c];
+              }
+            const Tensor<2, 3> inverse = invert(J);
+            for (unsigned int k = 0; k < 2; ++k)
+              (*gradient)[k] = (xi[k] < 0 || xi[k] > 1) ? Tensor<1, 3>() : inverse[k];
           }
         for (unsigned int k = 0; k < 2; ++k)
           xi[k] = std::min(1., std::max(0., xi[k]));
@@ -155,12 +174,13 @@ namespace FrictionalContact
 
 
 
-      Table<2, double>
+      FaceIntegrals<2>
       integrals_2d(const FaceVertices<2> &slave,
                    const Tensor<1, 2>    &normal,
                    const FaceVertices<2> &master)
       {
-        Table<2, double>   M(2, 2);
+        FaceIntegrals<2> result{Table<2, double>(2, 2), Table<2, Tensor<1, 2>>(2, 2)};
+        Table<2, double> &M = result.M;
         const Tensor<1, 2> edge   = slave[1] - slave[0];
         const double       length = edge.norm();
         // Where the line through y along the normal meets the slave's.
@@ -172,8 +192,10 @@ namespace FrictionalContact
         const double high = std::min(1., std::max(s0, s1));
         const double across = cross_2d(master[1] - master[0], normal);
         if (high - low <= 1e-12 || std::abs(across) < 1e-14 * length)
-          return M;
+          return result;
         const Table<2, double> A = dual_coefficients<2>(slave);
+        // d t / d x across the normal: the master's N_1 = t, N_0 = 1 - t.
+        const Tensor<1, 2> t_gradient({normal[1] / across, -normal[0] / across});
         const QGauss<1>        gauss(2);
         for (unsigned int q = 0; q < gauss.size(); ++q)
           {
@@ -183,24 +205,31 @@ namespace FrictionalContact
             const double   t   = cross_2d(x - master[0], normal) / across;
             const auto     Ns  = shape_values<2>(Point<1>(s));
             const auto     Nm  = shape_values<2>(Point<1>(std::min(1., std::max(0., t))));
+            const bool     inside = t > 0 && t < 1;
             for (unsigned int a = 0; a < 2; ++a)
               {
                 const double phi = A(a, 0) * Ns[0] + A(a, 1) * Ns[1];
                 for (unsigned int b = 0; b < 2; ++b)
                   M(a, b) += JxW * phi * Nm[b];
+                if (inside)
+                  {
+                    result.slide(a, 1) += JxW * phi * t_gradient;
+                    result.slide(a, 0) -= JxW * phi * t_gradient;
+                  }
               }
           }
-        return M;
+        return result;
       }
 
 
 
-      Table<2, double>
+      FaceIntegrals<3>
       integrals_3d(const FaceVertices<3> &slave,
                    const Tensor<1, 3>    &normal,
                    const FaceVertices<3> &master)
       {
-        Table<2, double> M(4, 4);
+        FaceIntegrals<3> result{Table<2, double>(4, 4), Table<2, Tensor<1, 3>>(4, 4)};
+        Table<2, double> &M = result.M;
         const Point<3>   centre = face_point<3>(slave, Point<2>(0.5, 0.5));
         Tensor<1, 3>     e1     = face_tangent(slave, Point<2>(0.5, 0.5), 0);
         e1 -= (e1 * normal) * normal;
@@ -224,7 +253,7 @@ namespace FrictionalContact
         const std::vector<Point2> overlap = without_duplicates(
           clip_polygon(slave_polygon, polygon(master)), 1e-12 * scale);
         if (overlap.size() < 3 || signed_area(overlap) <= 1e-12 * slave_area)
-          return M;
+          return result;
 
         const Table<2, double> A = dual_coefficients<3>(slave);
         Point2                 c = {{0, 0}};
@@ -243,19 +272,28 @@ namespace FrictionalContact
                 const double v = c[1] + r * (p[1] - c[1]) + s * (q[1] - c[1]);
                 const Point<3> X   = centre + u * e1 + v * e2;
                 const auto     Ns  = shape_values<3>(inverse_map(slave, X, normal));
-                const auto     Nm  = shape_values<3>(inverse_map(master, X, normal));
+                std::array<Tensor<1, 3>, 2> xi_gradient;
+                const Point<2> xi  = inverse_map(master, X, normal, &xi_gradient);
+                const auto     Nm  = shape_values<3>(xi);
                 const double   JxW = 2 * area * weight;
+                // grad N_b = sum_k dN_b / dxi_k grad xi_k.
+                const double dN[2][4] = {{-(1 - xi[1]), 1 - xi[1], -xi[1], xi[1]},
+                                         {-(1 - xi[0]), -xi[0], 1 - xi[0], xi[0]}};
                 for (unsigned int a = 0; a < 4; ++a)
                   {
                     double phi = 0;
                     for (unsigned int b = 0; b < 4; ++b)
                       phi += A(a, b) * Ns[b];
                     for (unsigned int b = 0; b < 4; ++b)
-                      M(a, b) += JxW * phi * Nm[b];
+                      {
+                        M(a, b) += JxW * phi * Nm[b];
+                        result.slide(a, b) +=
+                          JxW * phi * (dN[0][b] * xi_gradient[0] + dN[1][b] * xi_gradient[1]);
+                      }
                   }
               }
           }
-        return M;
+        return result;
       }
     } // namespace
 
@@ -313,7 +351,7 @@ namespace FrictionalContact
 
 
     template <int dim>
-    Table<2, double>
+    FaceIntegrals<dim>
     face_integrals(const FaceVertices<dim> &slave,
                    const Tensor<1, dim>    &slave_normal,
                    const FaceVertices<dim> &master)
@@ -387,11 +425,11 @@ namespace FrictionalContact
     dual_coefficients<2>(const FaceVertices<2> &);
     template Table<2, double>
     dual_coefficients<3>(const FaceVertices<3> &);
-    template Table<2, double>
+    template FaceIntegrals<2>
     face_integrals<2>(const FaceVertices<2> &,
                       const Tensor<1, 2> &,
                       const FaceVertices<2> &);
-    template Table<2, double>
+    template FaceIntegrals<3>
     face_integrals<3>(const FaceVertices<3> &,
                       const Tensor<1, 3> &,
                       const FaceVertices<3> &);

@@ -38,6 +38,8 @@ namespace FrictionalContact
     basis.vmult(in_u, src);
     tangent->vmult(force_in_u, in_u);
     basis.Tvmult(dst, force_in_u);
+    if (sliding != nullptr)
+      sliding->Tvmult_add(dst, src);
   }
 
 

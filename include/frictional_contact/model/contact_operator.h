@@ -254,6 +254,33 @@ namespace FrictionalContact
     }
 
     /**
+     * Calls @p f(slave dof, master unknown, value) for the change of the
+     * master share sum_j P_jl f_j of the reactions @p forces (Cartesian,
+     * one per node) as the slave nodes slide: value = s_a f_b for the
+     * slave's free component a and the master's component b, with
+     * dP_jl = s . delta (MortarInterface::SlaveNode::master_slides).
+     */
+    template <typename Function>
+    void
+    for_each_sliding_coupling(const std::vector<Tensor<1, dim>> &forces,
+                              const Function                    &f) const
+    {
+      for (unsigned int j = 0; j < nodes.size(); ++j)
+        if (nodes[j].pair >= 0 && forces[j].norm_square() > 0)
+          if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
+            for (unsigned int l = 0; l < data->masters.size(); ++l)
+              for (unsigned int b = 0; b < dim; ++b)
+                interfaces[nodes[j].pair].resolve_master_dof(
+                  data->masters[l].first[b],
+                  [&](const types::global_dof_index unknown, const double weight) {
+                    for (unsigned int a = 0; a < dim; ++a)
+                      if (nodes[j].free[a])
+                        f(nodes[j].dofs[a], unknown,
+                          weight * data->master_slides[l][a] * forces[j][b]);
+                  });
+    }
+
+    /**
      * Finds the candidates of @p body on the contact boundaries and builds
      * their frames for the obstacle at its initial position. Throws an
      * InputError if a contact boundary has no candidate.

@@ -105,6 +105,30 @@ namespace FrictionalContact
     void
     follow_rows(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
+    /**
+     * The Newton tangent's part from the rows sliding along the masters
+     * (after follow_rows()): the reactions @p forces of the contact nodes
+     * (Cartesian) reach the master unknowns through P^T f_S, which changes
+     * as a slave node slides by its relative displacement dw_j. Makes H
+     * (rows: slave dofs) with H^T dw = dP^T f_S to first order (the node's
+     * surroundings slide with it, the normals stay) and adds it to K_T,w.
+     * @p iterate (in w) is where the rows were taken: until the next
+     * geometry, the forces in w predict the rows' change from there
+     * (sliding_change()), so that the line search judges a step by the
+     * same model as the tangent.
+     */
+    void
+    follow_reactions(const ElasticBody<dim>            &body,
+                     const ContactOperator<dim>        &contact,
+                     const std::vector<Tensor<1, dim>> &forces,
+                     const Vector                      &iterate);
+
+    /// @p force_w += @p sign H^T (@p w - the iterate where the rows were
+    /// taken): the first-order change of the reactions' master share
+    /// between there and @p w (nothing without follow_reactions()).
+    void
+    add_sliding_change(const Vector &w, Vector &force_w, const double sign) const;
+
   private:
     /// Q from the mortar rows of @p contact; whether Q = I (no mortar
     /// row reaches a master's unknown).
@@ -112,6 +136,10 @@ namespace FrictionalContact
     make_basis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
     TrilinosWrappers::SparseMatrix basis;
+    /// H of follow_reactions() and the iterate where it was made.
+    TrilinosWrappers::SparseMatrix sliding;
+    Vector                         sliding_origin;
+    mutable Vector                 slide;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};

@@ -109,6 +109,10 @@ namespace FrictionalContact
       Tensor<1, dim> offset;
       /// The master vertices and P_jl (none for a rigid tool).
       std::vector<std::pair<NodeDofs, double>> masters;
+      /// How each P_jl changes as the node slides along the master by
+      /// delta (its surroundings with it): dP_jl = master_slides[l] . delta,
+      /// in the order of masters.
+      std::vector<Tensor<1, dim>> master_slides;
       /// The master's displacement over the increment at the node,
       /// sum_l P_jl (y_l(t_end) - y_l(t_start)): a rigid tool's motion; 0
       /// for a deformable master, whose motion is unknown.
@@ -246,14 +250,22 @@ namespace FrictionalContact
     bool
     covered(SlaveNode &node) const;
 
+    /// An entry of M (slave row, master column) and its slide derivative.
+    struct RowEntry
+    {
+      double         value = 0;
+      Tensor<1, dim> slide;
+    };
+    using RowEntries =
+      std::map<std::pair<types::global_dof_index, types::global_dof_index>, RowEntry>;
+
     /// The rows P_jl and gaps of a deformable master, from the entries of
     /// M this rank integrated (summed over the ranks here).
     void
     finish_rows(
-      const Vector &normal_sum,
-      const Vector &lumped_sum,
-      const std::map<std::pair<types::global_dof_index, types::global_dof_index>,
-                     double> &M_entries,
+      const Vector     &normal_sum,
+      const Vector     &lumped_sum,
+      const RowEntries &M_entries,
       const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>>
                      &master_vertex,
       const Vector   &u_ghosted,
@@ -263,13 +275,13 @@ namespace FrictionalContact
     struct MortarEntry
     {
       types::global_dof_index row, column;
-      double                  value;
+      RowEntry                entry;
 
       template <class Archive>
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &row &column &value;
+        archive &row &column &entry.value &entry.slide;
       }
     };
 

@@ -33,15 +33,27 @@ namespace FrictionalContact
     using FaceVertices =
       std::array<Point<dim>, GeometryInfo<dim - 1>::vertices_per_cell>;
 
+    /// The mortar integrals of a slave face against a master face.
+    template <int dim>
+    struct FaceIntegrals
+    {
+      /// M(a, b) = int phi_a N_b, for slave vertex a and master vertex b.
+      Table<2, double> M;
+      /// int phi_a grad N_b, the gradient of the master's shape function
+      /// across the projection direction: where the slave face slides by
+      /// delta along the master, M(a, b) changes by slide(a, b) . delta.
+      Table<2, Tensor<1, dim>> slide;
+    };
+
     /**
-     * M(a, b) = int phi_a N_b over the overlap of @p slave and @p master,
-     * for slave vertex a and master vertex b; @p slave_normal is the slave
-     * face's outward unit normal (at its centre). Zero if they do not
-     * overlap or do not face each other. The row sums are the weights
+     * The integrals over the overlap of @p slave and @p master;
+     * @p slave_normal is the slave face's outward unit normal (at its
+     * centre), along which the master is projected. Zero if they do not
+     * overlap or do not face each other. The row sums of M are the weights
      * D_aa = int phi_a over the covered part.
      */
     template <int dim>
-    Table<2, double>
+    FaceIntegrals<dim>
     face_integrals(const FaceVertices<dim> &slave,
                    const Tensor<1, dim>    &slave_normal,
                    const FaceVertices<dim> &master);

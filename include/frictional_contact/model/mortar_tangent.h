@@ -21,7 +21,9 @@ namespace FrictionalContact
    * product. Its entries (diagonal, node blocks, the matrix) are those of
    * the explicit product, made on request at an increment's start, where
    * the solvers' set-up reads them; asked for after the tangent changed
-   * without them, it throws. Owns that product and two work vectors.
+   * without them, it throws. Where the rows follow the iterates, the
+   * products also take the rows' sliding (take_sliding()), which makes
+   * the operator unsymmetric. Owns that product and two work vectors.
    */
   class MortarTangent : public StiffnessOperator
   {
@@ -36,6 +38,21 @@ namespace FrictionalContact
     /// also the explicit product (collective).
     void
     take(const TrilinosWrappers::SparseMatrix &tangent, const bool make_entries);
+
+    /// H (kept by reference; null: none), whose transpose is added to the
+    /// products: the master share of the reactions as the mortar rows
+    /// slide (MortarBasis::follow_reactions()). Not in the entries.
+    void
+    take_sliding(const TrilinosWrappers::SparseMatrix *sliding_rows)
+    {
+      sliding = sliding_rows;
+    }
+
+    bool
+    is_symmetric() const override
+    {
+      return sliding == nullptr;
+    }
 
     void
     vmult(Vector &dst, const Vector &src) const override;
@@ -75,6 +92,7 @@ namespace FrictionalContact
 
     const TrilinosWrappers::SparseMatrix &basis;
     const TrilinosWrappers::SparseMatrix *tangent = nullptr;
+    const TrilinosWrappers::SparseMatrix *sliding = nullptr;
     TrilinosWrappers::SparseMatrix        product;
     bool                                  entries_current = false;
     /// Q src and K_T Q src.

@@ -290,7 +290,7 @@ namespace FrictionalContact
               preconditioner, P),
             linear_solver.volumetric_split(),
             linear_solver.preconditioner_varies(),
-            any_slip,
+            any_slip || !K.is_symmetric(),
             K.is_assembled() ? 30 : 12,
             linear_solver.maximum_iterations(),
             std::max(reduction * rhs.l2_norm(), floor), rhs, w);

@@ -54,6 +54,14 @@ namespace FrictionalContact
     virtual bool
     is_assembled() const = 0;
 
+    /// Whether K is symmetric (CG may solve with it where the contact
+    /// conditions keep the system so).
+    virtual bool
+    is_symmetric() const
+    {
+      return true;
+    }
+
     /// The assembled matrix; throws an InputError naming @p purpose when K
     /// is matrix-free.
     virtual const TrilinosWrappers::SparseMatrix &
