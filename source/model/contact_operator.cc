@@ -50,9 +50,10 @@ namespace FrictionalContact
       "until it settles (<Pair geometry>). every Newton iterate: the "
       "mortar segments, rows, normals and gaps taken again at every Newton "
       "iterate and the iterate expressed in their basis, so that one solve "
-      "serves the increment; the tangent leaves out the geometry's "
-      "derivative, so the steps converge linearly while the geometry "
-      "moves (doc/performance.md, \"Finite strain against small strain\"). "
+      "serves the increment; the tangent takes the rows' sliding under "
+      "the reactions but not the turn of the normals, so the last steps "
+      "of a sliding increment converge linearly (doc/performance.md, "
+      "\"Finite strain against small strain\"). "
       "Pairs with the rigid tool: <Rigid tool/Geometry at finite strain>.");
     RigidTool<dim>::declare_parameters(prm);
     prm.enter_subsection("Obstacle");
