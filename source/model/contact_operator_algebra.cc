@@ -246,6 +246,49 @@ namespace FrictionalContact
 
 
 
+  template <int dim>
+  typename ContactOperator<dim>::Couplings
+  ContactOperator<dim>::mortar_couplings() const
+  {
+    Couplings couplings;
+    for (const Node &node : nodes)
+      if (node.pair >= 0)
+        if (const auto *data = interfaces[node.pair].node(node.dofs[0]))
+          for (const auto &[master, p] : data->masters)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (node.free[c])
+                interfaces[node.pair].resolve_master_dof(
+                  master[c], [&](const types::global_dof_index unknown, const double weight) {
+                    couplings[{node.dofs[c], unknown}] += p * weight;
+                  });
+    return couplings;
+  }
+
+
+
+  template <int dim>
+  typename ContactOperator<dim>::Couplings
+  ContactOperator<dim>::sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const
+  {
+    Couplings couplings;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      if (nodes[j].pair >= 0 && forces[j].norm_square() > 0)
+        if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
+          for (unsigned int l = 0; l < data->masters.size(); ++l)
+            for (unsigned int b = 0; b < dim; ++b)
+              interfaces[nodes[j].pair].resolve_master_dof(
+                data->masters[l].first[b],
+                [&](const types::global_dof_index unknown, const double weight) {
+                  for (unsigned int a = 0; a < dim; ++a)
+                    if (nodes[j].free[a])
+                      couplings[{nodes[j].dofs[a], unknown}] +=
+                        weight * data->master_slides[l][a] * forces[j][b];
+                });
+    return couplings;
+  }
+
+
+
   // Each member apart: contact_operator.cc instantiates the class, and a
   // unity build may put both files in one translation unit.
   template Tensor<1, 2>
@@ -284,6 +327,14 @@ namespace FrictionalContact
   ContactOperator<3>::nodal_block(const unsigned int,
                                   const Tensor<2, 3> &,
                                   NodalBlock &) const;
+  template typename ContactOperator<2>::Couplings
+  ContactOperator<2>::mortar_couplings() const;
+  template typename ContactOperator<3>::Couplings
+  ContactOperator<3>::mortar_couplings() const;
+  template typename ContactOperator<2>::Couplings
+  ContactOperator<2>::sliding_couplings(const std::vector<Tensor<1, 2>> &) const;
+  template typename ContactOperator<3>::Couplings
+  ContactOperator<3>::sliding_couplings(const std::vector<Tensor<1, 3>> &) const;
   template double
   ContactOperator<2>::largest_singular_value() const;
   template double

@@ -17,12 +17,7 @@ namespace FrictionalContact
 
     // E: P_jl into the columns of the master unknowns (the contact
     // operator resolves hanging and held master dofs, on any rank).
-    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> E;
-    contact.for_each_mortar_coupling([&](const types::global_dof_index slave,
-                                         const types::global_dof_index master,
-                                         const double                  p) {
-      E[{slave, master}] += p;
-    });
+    const auto E = contact.mortar_couplings();
 
     TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
     for (const auto i : owned)
@@ -119,12 +114,7 @@ namespace FrictionalContact
     if (!has_tangent || tangent_itself)
       return;
     const IndexSet &owned = body.locally_owned_dofs();
-    std::map<std::pair<types::global_dof_index, types::global_dof_index>, double> H;
-    contact.for_each_sliding_coupling(forces, [&](const types::global_dof_index slave,
-                                                  const types::global_dof_index master,
-                                                  const double                  value) {
-      H[{slave, master}] += value;
-    });
+    const auto H = contact.sliding_couplings(forces);
     TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, body.get_mpi_communicator());
     for (const auto &[entry, value] : H)
       pattern.add(entry.first, entry.second);

@@ -229,56 +229,29 @@ namespace FrictionalContact
       return to_local(j, turning_force(j, r_j, turn));
     }
 
-    /**
-     * Calls @p f(slave dof, master unknown, weight) for every free
-     * displacement component of every pair's slave node on this rank and
-     * every unknown its mortar row reaches: u_S = w_S + sum_l P_jl u_l is
-     * the basis of MortarBasis, with a hanging master dof replaced by the
-     * dofs it hangs from and a held one left out.
-     */
-    template <typename Function>
-    void
-    for_each_mortar_coupling(const Function &f) const
-    {
-      for (const Node &node : nodes)
-        if (node.pair >= 0)
-          if (const auto *data = interfaces[node.pair].node(node.dofs[0]))
-            for (const auto &[master, p] : data->masters)
-              for (unsigned int c = 0; c < dim; ++c)
-                if (node.free[c])
-                  interfaces[node.pair].resolve_master_dof(
-                    master[c], [&](const types::global_dof_index unknown,
-                                   const double                  weight) {
-                      f(node.dofs[c], unknown, p * weight);
-                    });
-    }
+    /// Entries of a matrix by (row, column), summed.
+    using Couplings =
+      std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>;
 
     /**
-     * Calls @p f(slave dof, master unknown, value) for the change of the
-     * master share sum_j P_jl f_j of the reactions @p forces (Cartesian,
-     * one per node) as the slave nodes slide: value = s_a f_b for the
-     * slave's free component a and the master's component b, with
-     * dP_jl = s . delta (MortarInterface::SlaveNode::master_slides).
+     * (slave dof, master unknown) -> P_jl for every free displacement
+     * component of every pair's slave node on this rank and every unknown
+     * its mortar row reaches: u_S = w_S + sum_l P_jl u_l is the basis of
+     * MortarBasis, with a hanging master dof replaced by the dofs it hangs
+     * from and a held one left out.
      */
-    template <typename Function>
-    void
-    for_each_sliding_coupling(const std::vector<Tensor<1, dim>> &forces,
-                              const Function                    &f) const
-    {
-      for (unsigned int j = 0; j < nodes.size(); ++j)
-        if (nodes[j].pair >= 0 && forces[j].norm_square() > 0)
-          if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
-            for (unsigned int l = 0; l < data->masters.size(); ++l)
-              for (unsigned int b = 0; b < dim; ++b)
-                interfaces[nodes[j].pair].resolve_master_dof(
-                  data->masters[l].first[b],
-                  [&](const types::global_dof_index unknown, const double weight) {
-                    for (unsigned int a = 0; a < dim; ++a)
-                      if (nodes[j].free[a])
-                        f(nodes[j].dofs[a], unknown,
-                          weight * data->master_slides[l][a] * forces[j][b]);
-                  });
-    }
+    Couplings
+    mortar_couplings() const;
+
+    /**
+     * The same couplings for the change of the master share
+     * sum_j P_jl f_j of the reactions @p forces (Cartesian, one per node)
+     * as the slave nodes slide: s_a f_b for the slave's free component a
+     * and the master's component b, with dP_jl = s . delta
+     * (MortarInterface::SlaveNode::master_slides).
+     */
+    Couplings
+    sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const;
 
     /**
      * Finds the candidates of @p body on the contact boundaries and builds
