@@ -1,0 +1,309 @@
+// The cell kernels of BodyResponse: the internal force and tangent of one
+// cell at small strain (standard or B-bar) and at finite strain, and the
+// one line that stops a solve where a cell inverted.
+#include <deal.II/base/mpi.h>
+
+#include <frictional_contact/base/input.h>
+#include <frictional_contact/model/body_response.h>
+
+#include <cmath>
+
+namespace FrictionalContact
+{
+  namespace
+  {
+    /// sum_m g_m s_cm: a gradient against row @p c of a symmetric tensor.
+    template <int dim>
+    double
+    against_row(const Tensor<1, dim> &g, const SymmetricTensor<2, dim> &s, const unsigned int c)
+    {
+      double sum = 0;
+      for (unsigned int m = 0; m < dim; ++m)
+        sum += g[m] * s[c][m];
+      return sum;
+    }
+
+
+    /// Adds JxW entry(a, c, b, d) at (dof[a][c], dof[b][d]) of @p matrix,
+    /// in its lower triangle (dof (a, c): component c at vertex a).
+    template <int dim, typename Entry>
+    void
+    add_lower_triangle(const std::vector<std::array<unsigned int, dim>> &dof,
+                       const double                                      JxW,
+                       const Entry                                      &entry,
+                       FullMatrix<double>                               &matrix)
+    {
+      for (unsigned int a = 0; a < dof.size(); ++a)
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int b = 0; b < dof.size(); ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (dof[b][d] <= dof[a][c])
+                matrix(dof[a][c], dof[b][d]) += entry(a, c, b, d) * JxW;
+    }
+
+
+
+    /// Fills the upper triangle of a symmetric matrix of which only the
+    /// lower one was assembled.
+    void
+    copy_lower_to_upper(FullMatrix<double> &matrix)
+    {
+      for (unsigned int i = 0; i < matrix.m(); ++i)
+        for (unsigned int j = i + 1; j < matrix.n(); ++j)
+          matrix(i, j) = matrix(j, i);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::cell_force_and_tangent(const bool   mean_dilatation,
+                                            const bool   with_tangent,
+                                            CellScratch &scratch) const
+  {
+    if (scratch.finite_strain)
+      return finite_strain_force_and_tangent(with_tangent, scratch);
+    // The shape function of dof (a, c) is N_a e_c: its symmetric gradient
+    // B has the entries grad N_a in row and column c, and its divergence
+    // is d N_a / d x_c, so that the contractions reduce to sums over the
+    // gradients.
+    const unsigned int n_vertices = scratch.dof.size();
+    const auto        &dof        = scratch.dof;
+    const auto        &div_bar    = scratch.mean_divergence;
+    scratch.force                 = 0;
+    if (with_tangent)
+      scratch.matrix = 0;
+    double C[dim][dim][dim][dim];
+    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+      {
+        const double                 JxW = scratch.fe_values.JxW(q);
+        const MaterialResponse<dim> &r   = scratch.responses[q];
+        const auto                  &G   = scratch.vertex_gradient[q];
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              double f = against_row(G[a], r.stress, c);
+              if (mean_dilatation)
+                f += (div_bar[dof[a][c]] - G[a][c]) * r.volumetric_stress;
+              scratch.force(dof[a][c]) += f * JxW;
+            }
+        if (!with_tangent)
+          continue;
+        // Standard element: d sigma = (C + c1 (x) I) : d epsilon. B-bar:
+        // K_ij = B_i:C:B_j + B_i:c1 div_bar_j
+        //        + (div_bar_i - div_i) (c2:B_j + k div_bar_j).
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int m = 0; m < dim; ++m)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int n = 0; n < dim; ++n)
+                C[c][m][d][n] = r.stress_by_strain[c][m][d][n] +
+                                (mean_dilatation || d != n ?
+                                   0. :
+                                   r.stress_by_volumetric_strain[c][m]);
+        // T_b[c][m][d] = sum_n C[c][m][d][n] dN_b/dx_n.
+        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
+        for (unsigned int b = 0; b < n_vertices; ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int m = 0; m < dim; ++m)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  double sum = 0;
+                  for (unsigned int n = 0; n < dim; ++n)
+                    sum += C[c][m][d][n] * G[b][n];
+                  T[b][c][m][d] = sum;
+                }
+        double coupling[GeometryInfo<dim>::vertices_per_cell][dim];
+        double volumetric[GeometryInfo<dim>::vertices_per_cell][dim];
+        if (mean_dilatation)
+          for (unsigned int a = 0; a < n_vertices; ++a)
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                coupling[a][c]   = against_row(G[a], r.stress_by_volumetric_strain, c);
+                volumetric[a][c] = against_row(G[a], r.volumetric_stress_by_strain, c) +
+                                   r.volumetric_stress_by_volumetric_strain *
+                                     div_bar[dof[a][c]];
+              }
+        add_lower_triangle<dim>(
+          dof,
+          JxW,
+          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
+            double k = 0;
+            for (unsigned int m = 0; m < dim; ++m)
+              k += G[a][m] * T[b][c][m][d];
+            if (mean_dilatation)
+              k += coupling[a][c] * div_bar[dof[b][d]] +
+                   (div_bar[dof[a][c]] - G[a][c]) * volumetric[b][d];
+            return k;
+          },
+          scratch.matrix);
+      }
+    if (with_tangent)
+      copy_lower_to_upper(scratch.matrix);
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::finite_strain_force_and_tangent(const bool   with_tangent,
+                                                     CellScratch &scratch) const
+  {
+    // The shape function of dof (a, c) is N_a e_c, its gradient e_c (x)
+    // Grad N_a: the force is (F S)_cJ dN_a/dX_J, the material part of the
+    // matrix dN_a/dX_J F_cI C_IJKL F_dK dN_b/dX_L, the geometric part
+    // delta_cd Grad N_a . S Grad N_b. A law of a volume ratio theta adds
+    // the coupling through it: for the cell's mean, h_ac g_bd / V with
+    // h_ac = int (F dS/dtheta)_cJ dN_a/dX_J and g_bd = int J (F^-T Grad
+    // N_b)_d (V d theta/du_bd); for the point's J, the same products at
+    // each point.
+    using VolumeRatio             = typename MaterialModel<dim>::VolumeRatio;
+    const unsigned int n_vertices = scratch.dof.size();
+    const auto        &dof        = scratch.dof;
+    const bool         averages   = scratch.volume_ratio != VolumeRatio::none;
+    const bool         pointwise  = scratch.volume_ratio == VolumeRatio::point;
+    scratch.force                 = 0;
+    if (with_tangent)
+      scratch.matrix = 0;
+    constexpr unsigned int n_points = GeometryInfo<dim>::vertices_per_cell; // 2^dim Gauss points
+    double h[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double g[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
+    double volume                                                 = 0;
+    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+      {
+        const double                 JxW = scratch.fe_values.JxW(q);
+        const MaterialResponse<dim> &r   = scratch.responses[q];
+        const auto                  &G   = scratch.vertex_gradient[q];
+        const Tensor<2, dim>        &F   = scratch.deformation_gradient[q];
+        const Tensor<2, dim>         S(r.stress);
+        const Tensor<2, dim>         P = F * S;
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            scratch.force(dof[a][c]) += (P[c] * G[a]) * JxW;
+        if (!with_tangent)
+          continue;
+        if (averages && scratch.jacobian[q] > 0)
+          {
+            volume += JxW;
+            const Tensor<2, dim> F_dS = F * Tensor<2, dim>(r.stress_by_volumetric_strain);
+            const Tensor<2, dim> cofactor = scratch.jacobian[q] * transpose(invert(F));
+            // For the cell's mean, every point adds to the first row.
+            const unsigned int row = pointwise ? q : 0;
+            for (unsigned int a = 0; a < n_vertices; ++a)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  h[row][a][c] += (F_dS[c] * G[a]) * JxW;
+                  g[row][a][c] += (cofactor[c] * G[a]) * (pointwise ? 1. : JxW);
+                }
+          }
+        // The first elasticity tensor A = dP/dF: A_cJdL = F_cI C_IJKL F_dK +
+        // delta_cd S_JL, with C the law's dS/dE (its volumetric part
+        // c1 (x) I); then T_b[c][J][d] = A_cJdL dN_b/dX_L, and the entry of
+        // (a, c), (b, d) is dN_a/dX_J T_b[c][J][d].
+        double CF[dim][dim][dim][dim]; // CF[I][J][d][L] = C_IJKL F_dK
+        for (unsigned int I = 0; I < dim; ++I)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int L = 0; L < dim; ++L)
+                {
+                  double sum =
+                    averages ? 0. : r.stress_by_volumetric_strain[I][J] * F[d][L];
+                  for (unsigned int K = 0; K < dim; ++K)
+                    sum += r.stress_by_strain[I][J][K][L] * F[d][K];
+                  CF[I][J][d][L] = sum;
+                }
+        double A[dim][dim][dim][dim];
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int J = 0; J < dim; ++J)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int L = 0; L < dim; ++L)
+                {
+                  double sum = c == d ? S[J][L] : 0.;
+                  for (unsigned int I = 0; I < dim; ++I)
+                    sum += F[c][I] * CF[I][J][d][L];
+                  A[c][J][d][L] = sum;
+                }
+        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
+        for (unsigned int b = 0; b < n_vertices; ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int J = 0; J < dim; ++J)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  double sum = 0;
+                  for (unsigned int L = 0; L < dim; ++L)
+                    sum += A[c][J][d][L] * G[b][L];
+                  T[b][c][J][d] = sum;
+                }
+        add_lower_triangle<dim>(
+          dof,
+          JxW,
+          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
+            double k = 0;
+            for (unsigned int J = 0; J < dim; ++J)
+              k += G[a][J] * T[b][c][J][d];
+            return k;
+          },
+          scratch.matrix);
+      }
+    if (with_tangent)
+      copy_lower_to_upper(scratch.matrix);
+    if (with_tangent && averages)
+      for (unsigned int row = 0; row < (pointwise ? n_points : 1); ++row)
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int b = 0; b < n_vertices; ++b)
+              for (unsigned int d = 0; d < dim; ++d)
+                scratch.matrix(dof[a][c], dof[b][d]) +=
+                  h[row][a][c] * g[row][b][d] / (pointwise ? 1. : volume);
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::refuse_inverted_cells(const CellScratch &scratch) const
+  {
+    const MPI_Comm comm     = body.get_mpi_communicator();
+    const double   smallest = Utilities::MPI::min(scratch.smallest_jacobian, comm);
+    if (smallest > 0)
+      return;
+    // The rank with the smallest det F says where (the lowest such rank).
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int owner =
+      Utilities::MPI::min(scratch.smallest_jacobian == smallest ?
+                            rank :
+                            Utilities::MPI::n_mpi_processes(comm),
+                          comm);
+    std::vector<double> where(scratch.smallest_jacobian_at.begin_raw(),
+                              scratch.smallest_jacobian_at.end_raw());
+    where = Utilities::MPI::broadcast(comm, where, owner);
+    std::string at;
+    for (const double x : where)
+      at += (at.empty() ? "(" : ", ") + Input::to_text(x);
+    throw InvertedCell("the cell at " + at + ") is inverted (det F = " +
+                      Input::to_text(smallest) +
+                      " <= 0): take smaller increments, or let them be cut "
+                      "(<Loading/On failure> = cut increment)");
+  }
+
+  // Each member apart: body_response.cc instantiates the class, and a unity
+  // build may put both files in one translation unit.
+  template void
+  BodyResponse<2>::cell_force_and_tangent(const bool,
+                                           const bool,
+                                           BodyResponse<2>::CellScratch &) const;
+  template void
+  BodyResponse<2>::finite_strain_force_and_tangent(const bool,
+                                                    BodyResponse<2>::CellScratch &) const;
+  template void
+  BodyResponse<2>::refuse_inverted_cells(const BodyResponse<2>::CellScratch &) const;
+  template void
+  BodyResponse<3>::cell_force_and_tangent(const bool,
+                                           const bool,
+                                           BodyResponse<3>::CellScratch &) const;
+  template void
+  BodyResponse<3>::finite_strain_force_and_tangent(const bool,
+                                                    BodyResponse<3>::CellScratch &) const;
+  template void
+  BodyResponse<3>::refuse_inverted_cells(const BodyResponse<3>::CellScratch &) const;
+} // namespace FrictionalContact
