@@ -24,6 +24,29 @@ namespace FrictionalContact
     }
 
 
+    /// T_b[c][m][d] = sum_n C[c][m][d][n] (G_b)_n: a fourth-order tensor
+    /// against the gradient G_b of each vertex's shape function.
+    template <int dim>
+    std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell>
+    against_gradients(const double (&C)[dim][dim][dim][dim],
+                      const std::vector<Tensor<1, dim>> &G)
+    {
+      std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
+      for (unsigned int b = 0; b < G.size(); ++b)
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int m = 0; m < dim; ++m)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                double sum = 0;
+                for (unsigned int n = 0; n < dim; ++n)
+                  sum += C[c][m][d][n] * G[b][n];
+                T[b][c][m][d] = sum;
+              }
+      return T;
+    }
+
+
+
     /// Adds JxW entry(a, c, b, d) at (dof[a][c], dof[b][d]) of @p matrix,
     /// in its lower triangle (dof (a, c): component c at vertex a).
     template <int dim, typename Entry>
@@ -102,17 +125,7 @@ namespace FrictionalContact
                                    0. :
                                    r.stress_by_volumetric_strain[c][m]);
         // T_b[c][m][d] = sum_n C[c][m][d][n] dN_b/dx_n.
-        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
-        for (unsigned int b = 0; b < n_vertices; ++b)
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int m = 0; m < dim; ++m)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  double sum = 0;
-                  for (unsigned int n = 0; n < dim; ++n)
-                    sum += C[c][m][d][n] * G[b][n];
-                  T[b][c][m][d] = sum;
-                }
+        const auto T = against_gradients<dim>(C, G);
         double coupling[GeometryInfo<dim>::vertices_per_cell][dim];
         double volumetric[GeometryInfo<dim>::vertices_per_cell][dim];
         if (mean_dilatation)
@@ -223,17 +236,7 @@ namespace FrictionalContact
                     sum += F[c][I] * CF[I][J][d][L];
                   A[c][J][d][L] = sum;
                 }
-        std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
-        for (unsigned int b = 0; b < n_vertices; ++b)
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int J = 0; J < dim; ++J)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  double sum = 0;
-                  for (unsigned int L = 0; L < dim; ++L)
-                    sum += A[c][J][d][L] * G[b][L];
-                  T[b][c][J][d] = sum;
-                }
+        const auto T = against_gradients<dim>(A, G);
         add_lower_triangle<dim>(
           dof,
           JxW,
