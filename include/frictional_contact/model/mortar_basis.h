@@ -26,7 +26,8 @@ namespace FrictionalContact
    * they hang from; fixed and prescribed ones drop out (their increment is
    * in the lifting). Built anew at each increment, from the contact
    * operator's mortar rows, and within it where they change at every
-   * Newton iterate. Owns Q and the transformed matrices.
+   * Newton iterate. Owns Q, the transformed matrices and the rows'
+   * sliding term H of the Newton tangent (follow_reactions()).
    */
   template <int dim>
   class MortarBasis
