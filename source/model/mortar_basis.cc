@@ -7,6 +7,37 @@
 
 namespace FrictionalContact
 {
+  namespace
+  {
+    /// @p matrix (rows: the locally owned dofs @p owned) with @p entries
+    /// and, with @p identity, ones on the diagonal.
+    void
+    make_matrix(const IndexSet &owned,
+                const MPI_Comm  comm,
+                const std::map<std::pair<types::global_dof_index, types::global_dof_index>,
+                               double>  &entries,
+                const bool                identity,
+                TrilinosWrappers::SparseMatrix &matrix)
+    {
+      TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
+      if (identity)
+        for (const auto i : owned)
+          pattern.add(i, i);
+      for (const auto &[entry, value] : entries)
+        pattern.add(entry.first, entry.second);
+      pattern.compress();
+      matrix.reinit(pattern);
+      if (identity)
+        for (const auto i : owned)
+          matrix.set(i, i, 1.);
+      for (const auto &[entry, value] : entries)
+        matrix.set(entry.first, entry.second, value);
+      matrix.compress(VectorOperation::insert);
+    }
+  } // namespace
+
+
+
   template <int dim>
   bool
   MortarBasis<dim>::make_basis(const ElasticBody<dim>     &body,
@@ -18,19 +49,7 @@ namespace FrictionalContact
     // E: P_jl into the columns of the master unknowns (the contact
     // operator resolves hanging and held master dofs, on any rank).
     const auto E = contact.mortar_couplings();
-
-    TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
-    for (const auto i : owned)
-      pattern.add(i, i);
-    for (const auto &[entry, value] : E)
-      pattern.add(entry.first, entry.second);
-    pattern.compress();
-    basis.reinit(pattern);
-    for (const auto i : owned)
-      basis.set(i, i, 1.);
-    for (const auto &[entry, value] : E)
-      basis.set(entry.first, entry.second, value);
-    basis.compress(VectorOperation::insert);
+    make_matrix(owned, comm, E, true, basis);
     return Utilities::MPI::sum(E.size(), comm) == 0;
   }
 
@@ -113,16 +132,8 @@ namespace FrictionalContact
   {
     if (!has_tangent || tangent_itself)
       return;
-    const IndexSet &owned = body.locally_owned_dofs();
-    const auto H = contact.sliding_couplings(forces);
-    TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, body.get_mpi_communicator());
-    for (const auto &[entry, value] : H)
-      pattern.add(entry.first, entry.second);
-    pattern.compress();
-    sliding.reinit(pattern);
-    for (const auto &[entry, value] : H)
-      sliding.set(entry.first, entry.second, value);
-    sliding.compress(VectorOperation::insert);
+    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
+                contact.sliding_couplings(forces), false, sliding);
     tangent_operator.take_sliding(&sliding);
     sliding_origin = iterate;
   }

@@ -382,9 +382,8 @@ namespace FrictionalContact
                     continue;
                   else if (master != nullptr)
                     to_parents(face.dofs[a][0], [&](const auto dof, const double w) {
-                      RowEntry &entry = M_entries[{dof, master->dofs[b][0]}];
-                      entry.value += w * M(a, b);
-                      entry.slide += w * integrals.slide(a, b);
+                      M_entries[{dof, master->dofs[b][0]}] +=
+                        RowEntry{w * M(a, b), w * integrals.slide(a, b)};
                     });
                   else
                     {
@@ -499,24 +498,17 @@ namespace FrictionalContact
     const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
     std::map<unsigned int, std::vector<MortarEntry>>           to_owners;
     std::map<types::global_dof_index, std::map<types::global_dof_index, RowEntry>> rows;
-    const auto add = [&rows](const types::global_dof_index row,
-                             const types::global_dof_index column,
-                             const RowEntry               &entry) {
-      RowEntry &sum = rows[row][column];
-      sum.value += entry.value;
-      sum.slide += entry.slide;
-    };
     for (const auto &[position, entry] : M_entries)
       {
         const unsigned int owner = owners[rows_here.index_within_set(position.first)];
         if (owner == this_rank)
-          add(position.first, position.second, entry);
+          rows[position.first][position.second] += entry;
         else
           to_owners[owner].push_back({position.first, position.second, entry});
       }
     for (const auto &[rank, entries] : Utilities::MPI::some_to_some(comm, to_owners))
       for (const MortarEntry &entry : entries)
-        add(entry.row, entry.column, entry.entry);
+        rows[entry.row][entry.column] += entry.entry;
 
     for (auto &[dof, node] : nodes)
       {

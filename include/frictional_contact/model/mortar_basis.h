@@ -115,7 +115,7 @@ namespace FrictionalContact
      * surroundings slide with it, the normals stay) and adds it to K_T,w.
      * @p iterate (in w) is where the rows were taken: until the next
      * geometry, the forces in w predict the rows' change from there
-     * (sliding_change()), so that the line search judges a step by the
+     * (add_sliding_change()), so that the line search judges a step by the
      * same model as the tangent.
      */
     void

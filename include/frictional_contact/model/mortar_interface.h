@@ -255,6 +255,14 @@ namespace FrictionalContact
     {
       double         value = 0;
       Tensor<1, dim> slide;
+
+      RowEntry &
+      operator+=(const RowEntry &other)
+      {
+        value += other.value;
+        slide += other.slide;
+        return *this;
+      }
     };
     using RowEntries =
       std::map<std::pair<types::global_dof_index, types::global_dof_index>, RowEntry>;
