@@ -333,8 +333,8 @@ namespace FrictionalContact
       {
         bool penetrates = false;
         for (unsigned int j = 0; j < contact.n_local() && !penetrates; ++j)
-          penetrates =
-            problem.relative_displacement(j, du)[0] > problem.gaps[j];
+          penetrates = problem.approach(j, problem.relative_displacement(j, du)) >
+                       problem.gaps[j];
         separates = !Utilities::MPI::logical_or(penetrates, comm);
       }
     if (separates)
@@ -448,11 +448,21 @@ namespace FrictionalContact
         force = iterate.load;
         mortar->force_to_w(force, iterate.load);
       }
+    // Where the rows follow the iterates, so does the gap as a node
+    // slides: g_j - approach() is the gap at the iterate, to first order
+    // about it.
+    problem.gap_slopes.resize(rows_change ? r.size() : 0);
     for (unsigned int j = 0; j < r.size(); ++j)
       {
         problem.gaps[j]          = contact.gap_at_start(j, increment.start);
         problem.obstacle_slip[j] = contact.prescribed_slip(j, increment.obstacle_motion);
         r[j]                     = contact.to_local(j, forces[j]);
+        if (rows_change)
+          {
+            problem.gap_slopes[j] = contact.gap_slope(j);
+            const Tensor<1, dim> u_j = problem.relative_displacement(j, iterate.du);
+            problem.gaps[j] -= problem.gap_slopes[j] * u_j;
+          }
       }
   }
 
@@ -475,7 +485,7 @@ namespace FrictionalContact
         results.local_displacement.push_back(
           problem.relative_displacement(j, outcome.du_solved));
         results.gap.push_back(problem.gaps[j] -
-                              results.local_displacement.back()[0]);
+                              problem.approach(j, results.local_displacement.back()));
         results.state.push_back(contact.friction_cone(j).state(r[j]));
         const double area = contact.nodal_area(j);
         results.pressure.push_back(area > 0 ? -r[j][0] / area : 0.);

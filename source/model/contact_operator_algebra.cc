@@ -289,6 +289,18 @@ namespace FrictionalContact
 
 
 
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::gap_slope(const unsigned int j) const
+  {
+    if (nodes[j].pair >= 0)
+      if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
+        return to_local(j, data->gap_slope);
+    return Tensor<1, dim>();
+  }
+
+
+
   // Each member apart: contact_operator.cc instantiates the class, and a
   // unity build may put both files in one translation unit.
   template Tensor<1, 2>
@@ -335,6 +347,10 @@ namespace FrictionalContact
   ContactOperator<2>::sliding_couplings(const std::vector<Tensor<1, 2>> &) const;
   template typename ContactOperator<3>::Couplings
   ContactOperator<3>::sliding_couplings(const std::vector<Tensor<1, 3>> &) const;
+  template Tensor<1, 2>
+  ContactOperator<2>::gap_slope(const unsigned int) const;
+  template Tensor<1, 3>
+  ContactOperator<3>::gap_slope(const unsigned int) const;
   template double
   ContactOperator<2>::largest_singular_value() const;
   template double

@@ -284,7 +284,7 @@ namespace FrictionalContact
                                        masters;
 
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-    std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> master_vertex;
+    std::map<types::global_dof_index, MasterVertex> master_vertex;
     for (unsigned int m = 0; m < masters.size(); ++m)
       {
         const auto &[y, face] = masters[m];
@@ -293,7 +293,8 @@ namespace FrictionalContact
         if (face != nullptr)
           for (unsigned int b = 0; b < n_face_vertices; ++b)
             master_vertex[face->dofs[b][0]] = {face->dofs[b],
-                                               masters_at_gaps[m].first[b]};
+                                               masters_at_gaps[m].first[b],
+                                               y[b]};
       }
     const auto tree = pack_rtree(boxes);
 
@@ -415,7 +416,8 @@ namespace FrictionalContact
         finish_rigid_rows(normal_sum, lumped_sum, rigid, gap_displacement);
       }
     else
-      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, gap_displacement, comm);
+      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, gap_displacement,
+                  u_ghosted, comm);
   }
 
 
@@ -480,7 +482,8 @@ namespace FrictionalContact
     const Vector     &normal_sum,
     const Vector     &lumped_sum,
     const RowEntries &M_entries,
-    const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>> &master_vertex,
+    const std::map<types::global_dof_index, MasterVertex> &master_vertex,
+    const Vector   &gap_displacement,
     const Vector   &u_ghosted,
     const MPI_Comm  comm)
   {
@@ -512,7 +515,11 @@ namespace FrictionalContact
 
     for (auto &[dof, node] : nodes)
       {
-        const Point<dim> position = start_node(dof, normal_sum, lumped_sum, u_ghosted);
+        const Point<dim> position =
+          start_node(dof, normal_sum, lumped_sum, gap_displacement);
+        Point<dim> current = slave_vertices.at(dof).second;
+        for (unsigned int c = 0; c < dim; ++c)
+          current[c] += u_ghosted[slave_vertices.at(dof).first[c]];
         std::vector<std::pair<types::global_dof_index, RowEntry>> row;
         if (const auto found = rows.find(dof); found != rows.end())
           for (const auto &[column, entry] : found->second)
@@ -525,12 +532,14 @@ namespace FrictionalContact
           continue;
         for (const auto &[column, entry] : row)
           {
-            const auto &[master_dofs, master_position] = master_vertex.at(column);
-            const double p = entry.value / node.weight;
-            node.masters.emplace_back(master_dofs, p);
+            const MasterVertex &master = master_vertex.at(column);
+            const double        p      = entry.value / node.weight;
+            node.masters.emplace_back(master.dofs, p);
             node.master_slides.push_back(entry.slide / node.weight);
-            node.gap += p * (node.normal * (master_position - position));
-            node.offset += p * (master_position - position);
+            node.gap += p * (node.normal * (master.at_gaps - position));
+            node.offset += p * (master.at_gaps - position);
+            node.gap_slope +=
+              node.master_slides.back() * (node.normal * (master.current - current));
           }
       }
   }

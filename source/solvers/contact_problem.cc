@@ -20,13 +20,12 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-        const double         g_j = problem.gaps[j];
+        const double         gap = problem.gaps[j] - problem.approach(j, u_j);
         Tensor<1, dim>       v   = u_j;
-        v[0] = -g_j -
-               contact.friction_coefficient(j) * FrictionCone<dim>::tangential_norm(u_j) +
-               u_j[0];
+        v[0] = -gap - contact.friction_coefficient(j) *
+                        FrictionCone<dim>::tangential_norm(u_j);
         local[0] += v * r[j];
-        local[1] += std::pow(std::min(g_j - u_j[0], 0.), 2);
+        local[1] += std::pow(std::min(gap, 0.), 2);
       }
     double global[2];
     Utilities::MPI::sum(local, du.get_mpi_communicator(), global);

@@ -152,7 +152,7 @@ namespace FrictionalContact
     problem.internal_force(du, work.K_du, du.linfty_norm() > 0);
     contact.apply(r, work.T_r);
     SolveStatistics           result;
-    const NodeProjection<dim> P(contact, conditions);
+    const NodeProjection<dim> P(contact, conditions, problem.gap_slopes);
     // A nearly incompressible body's Newton steps need tighter solves: with
     // the forcing terms of a compressible one, the normal sets of Hertz 2D
     // at nu = 0.4999 cycle (doc/performance.md, "Nearly incompressible").

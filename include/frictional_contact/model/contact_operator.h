@@ -253,6 +253,12 @@ namespace FrictionalContact
     Couplings
     sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const;
 
+    /// How candidate j's gap changes as it slides along a deformable
+    /// master, in its frame (MortarInterface::SlaveNode::gap_slope); zero
+    /// for any other candidate.
+    Tensor<1, dim>
+    gap_slope(const unsigned int j) const;
+
     /**
      * Finds the candidates of @p body on the contact boundaries and builds
      * their frames for the obstacle at its initial position. Throws an

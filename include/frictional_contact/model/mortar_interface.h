@@ -113,6 +113,10 @@ namespace FrictionalContact
       /// delta (its surroundings with it): dP_jl = master_slides[l] . delta,
       /// in the order of masters.
       std::vector<Tensor<1, dim>> master_slides;
+      /// How the gap changes as the node slides by delta (its master
+      /// where it is now): dg = gap_slope . delta, sum_l
+      /// master_slides[l] (n . (y_l - x_j)); zero for a rigid tool.
+      Tensor<1, dim> gap_slope;
       /// The master's displacement over the increment at the node,
       /// sum_l P_jl (y_l(t_end) - y_l(t_start)): a rigid tool's motion; 0
       /// for a deformable master, whose motion is unknown.
@@ -267,17 +271,26 @@ namespace FrictionalContact
     using RowEntries =
       std::map<std::pair<types::global_dof_index, types::global_dof_index>, RowEntry>;
 
-    /// The rows P_jl and gaps of a deformable master, from the entries of
-    /// M this rank integrated (summed over the ranks here).
+    /// A master vertex: its dofs, where the gaps are measured and where
+    /// it is now.
+    struct MasterVertex
+    {
+      NodeDofs   dofs;
+      Point<dim> at_gaps;
+      Point<dim> current;
+    };
+
+    /// The rows P_jl, gaps and gap slopes of a deformable master, from the
+    /// entries of M this rank integrated (summed over the ranks here); the
+    /// gaps measured at @p gap_displacement, the slopes at @p u_ghosted.
     void
-    finish_rows(
-      const Vector     &normal_sum,
-      const Vector     &lumped_sum,
-      const RowEntries &M_entries,
-      const std::map<types::global_dof_index, std::pair<NodeDofs, Point<dim>>>
-                     &master_vertex,
-      const Vector   &u_ghosted,
-      const MPI_Comm  comm);
+    finish_rows(const Vector                                            &normal_sum,
+                const Vector                                            &lumped_sum,
+                const RowEntries                                        &M_entries,
+                const std::map<types::global_dof_index, MasterVertex>   &master_vertex,
+                const Vector                                            &gap_displacement,
+                const Vector                                            &u_ghosted,
+                const MPI_Comm                                           comm);
 
     /// An entry of M on its way to the rank that owns its row.
     struct MortarEntry

@@ -86,6 +86,11 @@ namespace FrictionalContact
     /// obstacle, or a rigid tool) in the frame of j, tangential components
     /// only (component 0 is zero: the gap has it).
     std::vector<Tensor<1, dim>> obstacle_slip;
+    /// Where a pair's mortar rows follow the Newton iterates: how each
+    /// node's gap changes as it moves relative to its master, in its
+    /// frame: the row's slide along the master (empty elsewhere; see
+    /// approach()).
+    std::vector<Tensor<1, dim>> gap_slopes;
     /// The bodies only contact holds (none for most scenes).
     ContactHeldBodies contact_held;
     /// The internal force of nonlinear laws (nullptr: K du).
@@ -128,6 +133,28 @@ namespace FrictionalContact
                           const TrilinosWrappers::MPI::Vector &du) const
     {
       return contact.local_part(j, du) - obstacle_slip[j];
+    }
+
+    /// How far node j has closed its gap at the relative displacement
+    /// @p u_j: the gap is g_j minus this. Its normal component, less the
+    /// gap's change as the node slides along a master whose rows follow
+    /// the iterates (gap_slopes).
+    double
+    approach(const unsigned int j, const Tensor<1, dim> &u_j) const
+    {
+      return gap_slopes.empty() ? u_j[0] : u_j[0] - gap_slopes[j] * u_j;
+    }
+
+    /// The normal component that closes node j's gap exactly
+    /// (approach() = g_j) with the tangential components of @p u_j.
+    double
+    closing_normal(const unsigned int j, const Tensor<1, dim> &u_j) const
+    {
+      if (gap_slopes.empty())
+        return gaps[j];
+      Tensor<1, dim> tangential = u_j;
+      tangential[0]             = 0;
+      return (gaps[j] + gap_slopes[j] * tangential) / (1. - gap_slopes[j][0]);
     }
   };
 

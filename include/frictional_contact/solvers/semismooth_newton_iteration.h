@@ -45,10 +45,10 @@ namespace FrictionalContact
             continue;
           const Tensor<1, dim> current = problem.contact.local_part(j, du);
           Tensor<1, dim>       target  = current;
-          target[0]                    = problem.gaps[j];
           if (conditions[j] == NodeCondition::all_fixed)
             for (unsigned int d = 1; d < dim; ++d)
               target[d] = problem.obstacle_slip[j][d];
+          target[0] = problem.closing_normal(j, target - problem.obstacle_slip[j]);
           largest_move = std::max(largest_move, (target - current).norm());
           problem.contact.add_reaction(j, target - current, du);
           if (conditions[j] == NodeCondition::normal_fixed)
@@ -126,7 +126,8 @@ namespace FrictionalContact
       std::vector<double> gap(sets.conditions.size());
       for (unsigned int j = 0; j < gap.size(); ++j)
         {
-          gap[j] = problem.gaps[j] - problem.relative_displacement(j, du)[0];
+          gap[j] = problem.gaps[j] -
+                   problem.approach(j, problem.relative_displacement(j, du));
           for (unsigned int b = 0; b < n_bodies; ++b)
             if (held.held_by_candidate[j] & (std::uint64_t(1) << b))
               smallest[b] = std::min(smallest[b], gap[j]);
@@ -290,7 +291,7 @@ namespace FrictionalContact
               preconditioner, P),
             linear_solver.volumetric_split(),
             linear_solver.preconditioner_varies(),
-            any_slip || !K.is_symmetric(),
+            any_slip || !K.is_symmetric() || !problem.gap_slopes.empty(),
             K.is_assembled() ? 30 : 12,
             linear_solver.maximum_iterations(),
             std::max(reduction * rhs.l2_norm(), floor), rhs, w);

@@ -34,18 +34,26 @@ namespace FrictionalContact
     };
 
     /**
-     * The orthogonal projection onto displacements that leave the fixed
-     * directions of the node conditions alone: removes the normal part at
-     * slipping nodes and the whole nodal vector at sticking ones.
+     * The projections of the node conditions. apply(), on forces: the
+     * orthogonal projection that removes the normal part at slipping nodes
+     * and the whole nodal vector at sticking ones (the reactions take
+     * them). apply_to_step(), on Newton steps: onto the steps that keep the
+     * conditions, the whole nodal vector removed at sticking nodes, and at
+     * slipping ones the normal part that keeps the gap closed as the node
+     * slides (IncrementalProblem::gap_slopes): zero where the gap does not
+     * change with the slide, else a step oblique to the normal, its
+     * tangential part free.
      */
     template <int dim>
     class NodeProjection
     {
     public:
       NodeProjection(const ContactMap<dim>             &contact,
-                     const std::vector<NodeCondition> &conditions)
+                     const std::vector<NodeCondition> &conditions,
+                     const std::vector<Tensor<1, dim>> &gap_slopes)
         : contact(contact)
         , conditions(conditions)
+        , gap_slopes(gap_slopes)
       {}
 
       void
@@ -62,9 +70,36 @@ namespace FrictionalContact
             }
       }
 
+      void
+      apply_to_step(Vector &v) const
+      {
+        if (gap_slopes.empty())
+          {
+            apply(v);
+            return;
+          }
+        for (unsigned int j = 0; j < contact.n_local(); ++j)
+          if (conditions[j] != NodeCondition::none)
+            {
+              const Tensor<1, dim> part = contact.local_part(j, v);
+              Tensor<1, dim>       removed = part;
+              if (conditions[j] == NodeCondition::normal_fixed)
+                {
+                  // approach(j, part - removed) = 0 with part's tangent.
+                  Tensor<1, dim> tangential = part;
+                  tangential[0]             = 0;
+                  removed                   = Tensor<1, dim>();
+                  removed[0] = part[0] - gap_slopes[j] * tangential /
+                                           (1. - gap_slopes[j][0]);
+                }
+              contact.add_reaction(j, -removed, v);
+            }
+      }
+
     private:
       const ContactMap<dim>             &contact;
       const std::vector<NodeCondition> &conditions;
+      const std::vector<Tensor<1, dim>> &gap_slopes;
     };
 
     /**
@@ -253,7 +288,8 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < n; ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-        const double sigma = -r[j][0] - c[j] * (problem.gaps[j] - u_j[0]);
+        const double sigma =
+          -r[j][0] - c[j] * (problem.gaps[j] - problem.approach(j, u_j));
         Tensor<1, dim> zeta = r[j] - sets.c_t[j] * u_j;
         zeta[0]             = 0;
         const double zeta_norm = zeta.norm();
@@ -428,7 +464,8 @@ namespace FrictionalContact
         at.r = (1 - t) * r_0[j] + t * r_1[j] + missed;
         if (!step_turns.empty())
           at.r += problem.contact.frame_turn(j, at.r, t * step_turns[j]);
-        at.augmented_normal = at.r[0] + c[j] * (problem.gaps[j] - u_j[0]);
+        at.augmented_normal =
+          at.r[0] + c[j] * (problem.gaps[j] - problem.approach(j, u_j));
         const double mu_j = friction ? problem.contact.friction_coefficient(j) : 0.;
         at.bound          = mu_j * std::max(0., -at.augmented_normal);
         at.z              = at.r - c_t[j] * u_j;
@@ -458,8 +495,9 @@ namespace FrictionalContact
 
 
 
-    /// P M P with M the preconditioner of the Newton systems (a
-    /// ConditionPreconditioner).
+    /// M followed by the projection onto the steps that keep the node
+    /// conditions (NodeProjection::apply_to_step()), M the preconditioner
+    /// of the Newton systems (a ConditionPreconditioner).
     template <int dim, typename Preconditioner>
     class ProjectedPreconditioner
     {
@@ -474,7 +512,7 @@ namespace FrictionalContact
       vmult(Vector &dst, const Vector &src) const
       {
         M.vmult(dst, src);
-        P.apply(dst);
+        P.apply_to_step(dst);
       }
 
     private:
