@@ -11,6 +11,7 @@
 #include <frictional_contact/model/mortar_segments.h>
 
 #include <cmath>
+#include <tuple>
 #include <iostream>
 #include <vector>
 
@@ -326,6 +327,36 @@ main()
       }
     report("3D: the slide derivatives of M are its differences", error_flat, 1e-9);
     report("3D, distorted master: the same to the quadrature's error", error_distorted, 1e-5);
+  }
+
+  // The derivatives of a face's unit normal with respect to its vertices
+  // (how the pairs' frames turn in the Newton tangent) against central
+  // differences, on a tilted segment and a warped quad.
+  {
+    const auto normal_error = [](auto x) {
+      constexpr int dim  = std::tuple_size<decltype(x)>::value == 2 ? 2 : 3;
+      const auto    D    = unit_normal_derivatives<dim>(x);
+      const double  step = 1e-6;
+      double        error = 0;
+      for (unsigned int v = 0; v < x.size(); ++v)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            auto plus = x, minus = x;
+            plus[v][c] += step;
+            minus[v][c] -= step;
+            const Tensor<1, dim> difference =
+              (unit_normal<dim>(plus) - unit_normal<dim>(minus)) / (2 * step);
+            for (unsigned int i = 0; i < dim; ++i)
+              error = std::max(error, std::abs(difference[i] - D[v][i][c]));
+          }
+      return error;
+    };
+    report("2D: the unit normal's derivatives are its differences",
+           normal_error(FaceVertices<2>{{Point<2>(0.1, 0.2), Point<2>(0.7, 0.45)}}), 1e-8);
+    report("3D: the same on a warped quad",
+           normal_error(FaceVertices<3>{{Point<3>(0., 0., 0.), Point<3>(1.1, 0.1, 0.2),
+                                         Point<3>(-0.1, 0.9, 0.1), Point<3>(1.2, 1.3, -0.3)}}),
+           1e-8);
   }
   return 0;
 }

@@ -120,7 +120,7 @@ namespace FrictionalContact
     if (mortar != nullptr)
       {
         mortar->force_to_w(force, dst);
-        mortar->add_sliding_change(du, dst, 1.);
+        mortar->add_geometry_change(du, dst, 1.);
       }
     else
       dst = force;

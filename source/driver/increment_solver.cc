@@ -416,8 +416,8 @@ namespace FrictionalContact
     TrilinosWrappers::MPI::Vector du_in_u = iterate.du, force;
     if (rows_change)
       {
-        // K du as the law gives it (without the rows' predicted sliding).
-        mortar->add_sliding_change(iterate.du, iterate.K_du, -1.);
+        // K du as the law gives it (without the geometry's predicted change).
+        mortar->add_geometry_change(iterate.du, iterate.K_du, -1.);
         mortar->displacement_to_u(iterate.du, du_in_u);
         constraints.distribute(du_in_u);
         force = iterate.K_du;

@@ -134,7 +134,9 @@ namespace FrictionalContact
       return;
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
                 contact.sliding_couplings(forces), false, sliding);
-    tangent_operator.take_sliding(&sliding);
+    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
+                contact.turning_couplings(forces), false, turning);
+    tangent_operator.take_geometry(&sliding, &turning);
     sliding_origin = iterate;
   }
 
@@ -142,9 +144,9 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  MortarBasis<dim>::add_sliding_change(const Vector &w,
-                                       Vector       &force_w,
-                                       const double  sign) const
+  MortarBasis<dim>::add_geometry_change(const Vector &w,
+                                        Vector       &force_w,
+                                        const double  sign) const
   {
     if (sliding_origin.size() == 0)
       return;
@@ -152,6 +154,14 @@ namespace FrictionalContact
     slide -= sliding_origin;
     slide *= sign;
     sliding.Tvmult_add(force_w, slide);
+    if (slide_in_u.size() != slide.size())
+      {
+        slide_in_u.reinit(slide, true);
+        turning_force.reinit(slide, true);
+      }
+    basis.vmult(slide_in_u, slide);
+    turning.vmult(turning_force, slide_in_u);
+    basis.Tvmult_add(force_w, turning_force);
   }
 
 

@@ -416,8 +416,12 @@ namespace FrictionalContact
         finish_rigid_rows(normal_sum, lumped_sum, rigid, gap_displacement);
       }
     else
-      finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, gap_displacement,
-                  u_ghosted, comm);
+      {
+        finish_rows(normal_sum, lumped_sum, M_entries, master_vertex, gap_displacement,
+                    u_ghosted, comm);
+        if (gaps_at != nullptr)
+          take_normal_derivatives(u_ghosted);
+      }
   }
 
 

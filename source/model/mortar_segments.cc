@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <frictional_contact/model/mortar_segments.h>
@@ -381,6 +382,55 @@ namespace FrictionalContact
 
 
     template <int dim>
+    std::array<Tensor<2, dim>, GeometryInfo<dim - 1>::vertices_per_cell>
+    unit_normal_derivatives(const FaceVertices<dim> &x)
+    {
+      // n = N / |N|: dn = (I - n n^T) dN / |N|, N linear in the vertices
+      // in 2D and a cross product of two mean edges in 3D.
+      std::array<Tensor<2, dim>, GeometryInfo<dim - 1>::vertices_per_cell> D;
+      Tensor<1, dim> N;
+      if constexpr (dim == 2)
+        {
+          N = Tensor<1, dim>({x[1][1] - x[0][1], x[0][0] - x[1][0]});
+          D[1][0][1] = 1;
+          D[1][1][0] = -1;
+          D[0]       = -D[1];
+        }
+      else
+        {
+          const Tensor<1, dim> a = 0.5 * (x[1] - x[0] + x[3] - x[2]);
+          const Tensor<1, dim> b = 0.5 * (x[2] - x[0] + x[3] - x[1]);
+          N                      = cross_product_3d(a, b);
+          // d(a x b) = -[b]x da + [a]x db, [v]x w = v x w.
+          const auto cross_matrix = [](const Tensor<1, dim> &v) {
+            Tensor<2, dim> m;
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                Tensor<1, dim> e;
+                e[k]                              = 1;
+                const Tensor<1, dim> column       = cross_product_3d(v, e);
+                for (unsigned int i = 0; i < dim; ++i)
+                  m[i][k] = column[i];
+              }
+            return m;
+          };
+          const double along_a[4] = {-0.5, 0.5, -0.5, 0.5};
+          const double along_b[4] = {-0.5, -0.5, 0.5, 0.5};
+          for (unsigned int v = 0; v < 4; ++v)
+            D[v] = -along_a[v] * cross_matrix(b) + along_b[v] * cross_matrix(a);
+        }
+      const double         length = N.norm();
+      const Tensor<1, dim> n      = N / length;
+      const Tensor<2, dim> across =
+        (Tensor<2, dim>(unit_symmetric_tensor<dim>()) - outer_product(n, n)) / length;
+      for (auto &D_v : D)
+        D_v = across * D_v;
+      return D;
+    }
+
+
+
+    template <int dim>
     Tensor<2, dim>
     normal_gradient(const FaceVertices<dim>                                             &x,
                     const std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell> &normals)
@@ -437,6 +487,10 @@ namespace FrictionalContact
     unit_normal<2>(const FaceVertices<2> &);
     template Tensor<1, 3>
     unit_normal<3>(const FaceVertices<3> &);
+    template std::array<Tensor<2, 2>, 2>
+    unit_normal_derivatives<2>(const FaceVertices<2> &);
+    template std::array<Tensor<2, 3>, 4>
+    unit_normal_derivatives<3>(const FaceVertices<3> &);
     template Tensor<2, 2>
     normal_gradient<2>(const FaceVertices<2> &, const std::array<Tensor<1, 2>, 2> &);
     template Tensor<2, 3>

@@ -253,6 +253,18 @@ namespace FrictionalContact
     Couplings
     sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const;
 
+    /**
+     * The change of the contact forces @p forces (Cartesian, one per
+     * node) of pairs of two bodies as the slave normals turn with the
+     * slave surface (MortarInterface::SlaveNode::normal_derivatives), the
+     * reactions held in the turning frames (turning_force()): (slave dof,
+     * dof of a vertex that turns its normal) -> entry, for the free
+     * components of the slave node. Empty where no rows follow the
+     * iterates.
+     */
+    Couplings
+    turning_couplings(const std::vector<Tensor<1, dim>> &forces) const;
+
     /// How candidate j's gap changes as it slides along a deformable
     /// master, in its frame (MortarInterface::SlaveNode::gap_slope); zero
     /// for any other candidate.

@@ -27,7 +27,8 @@ namespace FrictionalContact
    * in the lifting). Built anew at each increment, from the contact
    * operator's mortar rows, and within it where they change at every
    * Newton iterate. Owns Q, the transformed matrices and the rows'
-   * sliding term H of the Newton tangent (follow_reactions()).
+   * Newton tangent's terms of the moving geometry, H and F
+   * (follow_reactions()).
    */
   template <int dim>
   class MortarBasis
@@ -107,16 +108,17 @@ namespace FrictionalContact
     follow_rows(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
     /**
-     * The Newton tangent's part from the rows sliding along the masters
-     * (after follow_rows()): the reactions @p forces of the contact nodes
-     * (Cartesian) reach the master unknowns through P^T f_S, which changes
-     * as a slave node slides by its relative displacement dw_j. Makes H
-     * (rows: slave dofs) with H^T dw = dP^T f_S to first order (the node's
-     * surroundings slide with it, the normals stay) and adds it to K_T,w.
-     * @p iterate (in w) is where the rows were taken: until the next
-     * geometry, the forces in w predict the rows' change from there
-     * (add_sliding_change()), so that the line search judges a step by the
-     * same model as the tangent.
+     * The Newton tangent's parts from the moving geometry (after
+     * follow_rows()), for the reactions @p forces of the contact nodes
+     * (Cartesian): they reach the master unknowns through P^T f_S, which
+     * changes as a slave node slides by its relative displacement dw_j,
+     * H^T dw = dP^T f_S to first order (the node's surroundings slide with
+     * it); and they turn with the slave normals, held in the turning
+     * frames, F du (ContactOperator::turning_couplings()). Adds H^T +
+     * Q^T F Q to K_T,w. @p iterate (in w) is where the geometry was taken:
+     * until the next one, the forces in w predict its change from there
+     * (add_geometry_change()), so that the line search judges a step by
+     * the same model as the tangent.
      */
     void
     follow_reactions(const ElasticBody<dim>            &body,
@@ -124,11 +126,11 @@ namespace FrictionalContact
                      const std::vector<Tensor<1, dim>> &forces,
                      const Vector                      &iterate);
 
-    /// @p force_w += @p sign H^T (@p w - the iterate where the rows were
-    /// taken): the first-order change of the reactions' master share
-    /// between there and @p w (nothing without follow_reactions()).
+    /// @p force_w += @p sign (H^T + Q^T F Q) (@p w - the iterate where the
+    /// geometry was taken): the first-order change of the forces between
+    /// there and @p w (nothing without follow_reactions()).
     void
-    add_sliding_change(const Vector &w, Vector &force_w, const double sign) const;
+    add_geometry_change(const Vector &w, Vector &force_w, const double sign) const;
 
   private:
     /// Q from the mortar rows of @p contact; whether Q = I (no mortar
@@ -137,10 +139,12 @@ namespace FrictionalContact
     make_basis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
     TrilinosWrappers::SparseMatrix basis;
-    /// H of follow_reactions() and the iterate where it was made.
+    /// H and F of follow_reactions(), the iterate where they were made,
+    /// and work vectors.
     TrilinosWrappers::SparseMatrix sliding;
+    TrilinosWrappers::SparseMatrix turning;
     Vector                         sliding_origin;
-    mutable Vector                 slide;
+    mutable Vector                 slide, slide_in_u, turning_force;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};

@@ -117,6 +117,11 @@ namespace FrictionalContact
       /// where it is now): dg = gap_slope . delta, sum_l
       /// master_slides[l] (n . (y_l - x_j)); zero for a rigid tool.
       Tensor<1, dim> gap_slope;
+      /// Where the rows follow the Newton iterates (a deformable master):
+      /// how the normal turns as the vertices of the node's slave faces
+      /// move, dn = sum_k D_k dx_k, one D_k per vertex k (the node among
+      /// them; a hanging vertex's share of the normal left out).
+      std::vector<std::pair<NodeDofs, Tensor<2, dim>>> normal_derivatives;
       /// The master's displacement over the increment at the node,
       /// sum_l P_jl (y_l(t_end) - y_l(t_start)): a rigid tool's motion; 0
       /// for a deformable master, whose motion is unknown.
@@ -213,6 +218,11 @@ namespace FrictionalContact
     /// The current vertices of @p face for the displacement @p u_ghosted.
     MortarSegments::FaceVertices<dim>
     current_vertices(const Face &face, const Vector &u_ghosted) const;
+
+    /// The slave nodes' normal_derivatives at the displacement @p u_ghosted
+    /// (after their rows: a node with a master only).
+    void
+    take_normal_derivatives(const Vector &u_ghosted);
 
     /// The outward unit normal of a face with vertices @p x at its centre.
     static Tensor<1, dim>

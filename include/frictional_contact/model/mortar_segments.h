@@ -72,6 +72,12 @@ namespace FrictionalContact
     Tensor<1, dim>
     unit_normal(const FaceVertices<dim> &x);
 
+    /// The derivatives of unit_normal() with respect to each vertex:
+    /// dn = sum_v D_v dx_v.
+    template <int dim>
+    std::array<Tensor<2, dim>, GeometryInfo<dim - 1>::vertices_per_cell>
+    unit_normal_derivatives(const FaceVertices<dim> &x);
+
     /**
      * The gradient at the face's centre of the normal field interpolated
      * (Q1) from the unit @p normals at its vertices, along the face: G with

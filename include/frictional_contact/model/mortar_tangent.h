@@ -22,8 +22,9 @@ namespace FrictionalContact
    * the explicit product, made on request at an increment's start, where
    * the solvers' set-up reads them; asked for after the tangent changed
    * without them, it throws. Where the rows follow the iterates, the
-   * products also take the rows' sliding (take_sliding()), which makes
-   * the operator unsymmetric. Owns that product and two work vectors.
+   * products also take the rows' sliding and the slave normals' turn
+   * (take_geometry()), which make the operator unsymmetric. Owns that
+   * product and two work vectors.
    */
   class MortarTangent : public StiffnessOperator
   {
@@ -39,19 +40,22 @@ namespace FrictionalContact
     void
     take(const TrilinosWrappers::SparseMatrix &tangent, const bool make_entries);
 
-    /// H (kept by reference; null: none), whose transpose is added to the
-    /// products: the master share of the reactions as the mortar rows
-    /// slide (MortarBasis::follow_reactions()). Not in the entries.
+    /// H and F (kept by reference; null: none), added to the products as
+    /// H^T + Q^T F Q: the master share of the reactions as the mortar rows
+    /// slide, and the reactions' turn with the slave normals
+    /// (MortarBasis::follow_reactions()). Not in the entries.
     void
-    take_sliding(const TrilinosWrappers::SparseMatrix *sliding_rows)
+    take_geometry(const TrilinosWrappers::SparseMatrix *sliding_rows,
+                  const TrilinosWrappers::SparseMatrix *turning_frames)
     {
       sliding = sliding_rows;
+      turning = turning_frames;
     }
 
     bool
     is_symmetric() const override
     {
-      return sliding == nullptr;
+      return sliding == nullptr && turning == nullptr;
     }
 
     void
@@ -93,6 +97,7 @@ namespace FrictionalContact
     const TrilinosWrappers::SparseMatrix &basis;
     const TrilinosWrappers::SparseMatrix *tangent = nullptr;
     const TrilinosWrappers::SparseMatrix *sliding = nullptr;
+    const TrilinosWrappers::SparseMatrix *turning = nullptr;
     TrilinosWrappers::SparseMatrix        product;
     bool                                  entries_current = false;
     /// Q src and K_T Q src.
