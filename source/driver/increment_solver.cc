@@ -223,9 +223,17 @@ namespace FrictionalContact
                 IterateInBasis iterate{du, K_du, load};
                 take_contact_geometry(contact, problem, *increment, mortar, iterate, r);
               };
+            if (contact.mortar_rows_change_within_newton())
+              outcome.problem->pair_frame_turns =
+                [&contact = model.get_contact(), mortar = mortar.get()](
+                  const TrilinosWrappers::MPI::Vector &step,
+                  std::vector<Tensor<1, dim>>         &turns) {
+                  mortar->frame_turns(contact, step, turns);
+                };
           }
         solve_contact(model, state, start, outcome, record_history, timer, warm_start);
-        outcome.problem->follow_geometry = nullptr;
+        outcome.problem->follow_geometry  = nullptr;
+        outcome.problem->pair_frame_turns = nullptr;
         if (!result.converged)
           return outcome;
         if (contact.active())
@@ -457,7 +465,7 @@ namespace FrictionalContact
         problem.gaps[j]          = contact.gap_at_start(j, increment.start);
         problem.obstacle_slip[j] = contact.prescribed_slip(j, increment.obstacle_motion);
         r[j]                     = contact.to_local(j, forces[j]);
-        if (rows_change)
+        if (!problem.gap_slopes.empty())
           {
             problem.gap_slopes[j] = contact.gap_slope(j);
             const Tensor<1, dim> u_j = problem.relative_displacement(j, iterate.du);

@@ -51,9 +51,10 @@ namespace FrictionalContact
       "mortar segments, rows, normals and gaps taken again at every Newton "
       "iterate and the iterate expressed in their basis, so that one solve "
       "serves the increment; the tangent takes the rows' sliding under "
-      "the reactions but not the turn of the normals, so the last steps "
-      "of a sliding increment converge linearly (doc/performance.md, "
-      "\"Finite strain against small strain\"). "
+      "the reactions, the gaps' change along the slide and the reactions' "
+      "turn with the slave normals (doc/formulation.md, \"Finite "
+      "strain\"; doc/performance.md, \"Finite strain against small "
+      "strain\"). "
       "Pairs with the rigid tool: <Rigid tool/Geometry at finite strain>.");
     RigidTool<dim>::declare_parameters(prm);
     prm.enter_subsection("Obstacle");

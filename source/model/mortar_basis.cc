@@ -135,7 +135,9 @@ namespace FrictionalContact
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
                 contact.sliding_couplings(forces), false, sliding);
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                contact.turning_couplings(forces), false, turning);
+                contact.turn_couplings(nullptr), false, turns);
+    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
+                contact.turn_couplings(&forces), false, turning);
     tangent_operator.take_geometry(&sliding, &turning);
     sliding_origin = iterate;
   }
@@ -154,14 +156,28 @@ namespace FrictionalContact
     slide -= sliding_origin;
     slide *= sign;
     sliding.Tvmult_add(force_w, slide);
-    if (slide_in_u.size() != slide.size())
+  }
+
+
+
+  template <int dim>
+  void
+  MortarBasis<dim>::frame_turns(const ContactOperator<dim>  &contact,
+                                const Vector                &step,
+                                std::vector<Tensor<1, dim>> &node_turns) const
+  {
+    node_turns.assign(contact.n_local(), Tensor<1, dim>());
+    if (sliding_origin.size() == 0)
+      return;
+    if (step_in_u.size() != step.size())
       {
-        slide_in_u.reinit(slide, true);
-        turning_force.reinit(slide, true);
+        step_in_u.reinit(step, true);
+        turn_of_step.reinit(step, true);
       }
-    basis.vmult(slide_in_u, slide);
-    turning.vmult(turning_force, slide_in_u);
-    basis.Tvmult_add(force_w, turning_force);
+    basis.vmult(step_in_u, step);
+    turns.vmult(turn_of_step, step_in_u);
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      node_turns[j] = contact.nodal_value(j, turn_of_step);
   }
 
 

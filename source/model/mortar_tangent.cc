@@ -37,11 +37,11 @@ namespace FrictionalContact
       }
     basis.vmult(in_u, src);
     tangent->vmult(force_in_u, in_u);
-    if (turning != nullptr)
-      turning->vmult_add(force_in_u, in_u);
     basis.Tvmult(dst, force_in_u);
     if (sliding != nullptr)
       sliding->Tvmult_add(dst, src);
+    if (turning != nullptr)
+      turning->vmult_add(dst, in_u);
   }
 
 

@@ -254,16 +254,16 @@ namespace FrictionalContact
     sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const;
 
     /**
-     * The change of the contact forces @p forces (Cartesian, one per
-     * node) of pairs of two bodies as the slave normals turn with the
-     * slave surface (MortarInterface::SlaveNode::normal_derivatives), the
-     * reactions held in the turning frames (turning_force()): (slave dof,
-     * dof of a vertex that turns its normal) -> entry, for the free
-     * components of the slave node. Empty where no rows follow the
-     * iterates.
+     * How the frames of pairs of two bodies turn with the slave surface
+     * (MortarInterface::SlaveNode::normal_derivatives, where the rows
+     * follow the iterates; empty elsewhere): (slave dof, dof of a vertex
+     * that turns its normal) -> entry, for the free components of the
+     * slave node. Without @p forces, the turn of what the node touches
+     * (as normal_turns()); with them (Cartesian, one per node), the force
+     * of the turning frame, turning_force() (none where a node has none).
      */
     Couplings
-    turning_couplings(const std::vector<Tensor<1, dim>> &forces) const;
+    turn_couplings(const std::vector<Tensor<1, dim>> *forces) const;
 
     /// How candidate j's gap changes as it slides along a deformable
     /// master, in its frame (MortarInterface::SlaveNode::gap_slope); zero
@@ -516,6 +516,11 @@ namespace FrictionalContact
     describe_boundaries(const BoundaryNames &names) const;
 
   private:
+    /// The turn of what pair node j touches per move of each vertex of
+    /// its slave faces (turn_couplings()).
+    std::vector<std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
+    turns_per_move(const unsigned int j) const;
+
     /**
      * At a node whose frame turns, the change of its contact force T_j r_j
      * (@p r_j held, in its frame) as the outward normal n of what it

@@ -113,12 +113,17 @@ namespace FrictionalContact
      * (Cartesian): they reach the master unknowns through P^T f_S, which
      * changes as a slave node slides by its relative displacement dw_j,
      * H^T dw = dP^T f_S to first order (the node's surroundings slide with
-     * it); and they turn with the slave normals, held in the turning
-     * frames, F du (ContactOperator::turning_couplings()). Adds H^T +
-     * Q^T F Q to K_T,w. @p iterate (in w) is where the geometry was taken:
-     * until the next one, the forces in w predict its change from there
-     * (add_geometry_change()), so that the line search judges a step by
-     * the same model as the tangent.
+     * it); and the slave nodes' frames turn with the slave surface, which
+     * at a slipping node turns the friction force and the normal reaction
+     * into each other: F u, the force of the turning frame
+     * (ContactOperator::turn_couplings()) at the node's own unknowns in
+     * w, as for an obstacle's frames (the reactions keep their Cartesian
+     * directions across a geometry; only the cone conditions see the
+     * turn). Adds H^T + F Q to K_T,w. @p iterate (in w) is where the
+     * geometry was taken: until the next one, the forces in w predict the
+     * rows' change from there (add_geometry_change()), and the line
+     * search turns the reactions along a step by frame_turns(), so that it
+     * judges a step by the same model as the tangent.
      */
     void
     follow_reactions(const ElasticBody<dim>            &body,
@@ -126,11 +131,19 @@ namespace FrictionalContact
                      const std::vector<Tensor<1, dim>> &forces,
                      const Vector                      &iterate);
 
-    /// @p force_w += @p sign (H^T + Q^T F Q) (@p w - the iterate where the
-    /// geometry was taken): the first-order change of the forces between
-    /// there and @p w (nothing without follow_reactions()).
+    /// @p force_w += @p sign H^T (@p w - the iterate where the geometry
+    /// was taken): the first-order change of the reactions' master share
+    /// between there and @p w (nothing without follow_reactions()).
     void
     add_geometry_change(const Vector &w, Vector &force_w, const double sign) const;
+
+    /// The turn of each contact node's frame (ContactMap::normal_turns())
+    /// for the step @p step (in w): G Q step at the nodes of @p contact,
+    /// with G the turns of follow_reactions() (zero before).
+    void
+    frame_turns(const ContactOperator<dim>  &contact,
+                const Vector                &step,
+                std::vector<Tensor<1, dim>> &node_turns) const;
 
   private:
     /// Q from the mortar rows of @p contact; whether Q = I (no mortar
@@ -139,12 +152,13 @@ namespace FrictionalContact
     make_basis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
     TrilinosWrappers::SparseMatrix basis;
-    /// H and F of follow_reactions(), the iterate where they were made,
-    /// and work vectors.
+    /// H, the frames' turns G and their forces F of follow_reactions(),
+    /// the iterate where they were made, and work vectors.
     TrilinosWrappers::SparseMatrix sliding;
+    TrilinosWrappers::SparseMatrix turns;
     TrilinosWrappers::SparseMatrix turning;
     Vector                         sliding_origin;
-    mutable Vector                 slide, slide_in_u, turning_force;
+    mutable Vector                 slide, step_in_u, turn_of_step;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};

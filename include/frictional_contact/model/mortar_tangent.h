@@ -41,9 +41,9 @@ namespace FrictionalContact
     take(const TrilinosWrappers::SparseMatrix &tangent, const bool make_entries);
 
     /// H and F (kept by reference; null: none), added to the products as
-    /// H^T + Q^T F Q: the master share of the reactions as the mortar rows
-    /// slide, and the reactions' turn with the slave normals
-    /// (MortarBasis::follow_reactions()). Not in the entries.
+    /// H^T + F Q: the master share of the reactions as the mortar rows
+    /// slide, and the slave nodes' turning frames (MortarBasis::
+    /// follow_reactions()). Not in the entries.
     void
     take_geometry(const TrilinosWrappers::SparseMatrix *sliding_rows,
                   const TrilinosWrappers::SparseMatrix *turning_frames)

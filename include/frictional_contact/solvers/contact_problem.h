@@ -114,6 +114,14 @@ namespace FrictionalContact
                        TrilinosWrappers::MPI::Vector &K_du)>
       follow_geometry;
 
+    /// Where the frames of pairs of two bodies turn within Newton (the
+    /// rows follow the iterates): each node's turn for a step (as
+    /// ContactMap::normal_turns() gives it for an obstacle's frames).
+    /// Empty elsewhere.
+    std::function<void(const TrilinosWrappers::MPI::Vector &step,
+                       std::vector<Tensor<1, dim>>         &turns)>
+      pair_frame_turns;
+
     /// K du, or N(du) for nonlinear laws (then with @p with_tangent also
     /// the tangent at du as the stiffness).
     void

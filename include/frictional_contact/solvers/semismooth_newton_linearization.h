@@ -390,11 +390,14 @@ namespace FrictionalContact
           }
         // Frames that follow the configuration turn along the step as the
         // Newton tangent has them turn (to first order).
-        if (problem.contact.frames_follow_configuration())
+        if (problem.contact.frames_follow_configuration() || problem.pair_frame_turns)
           {
             scratch = du_1;
             scratch -= du_0;
-            problem.contact.normal_turns(scratch, step_turns);
+            if (problem.pair_frame_turns)
+              problem.pair_frame_turns(scratch, step_turns);
+            else
+              problem.contact.normal_turns(scratch, step_turns);
           }
         balance_a = balance_0.norm_sqr();
         balance_b = balance_0 * balance_1 - balance_a;
