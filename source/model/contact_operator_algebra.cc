@@ -247,110 +247,6 @@ namespace FrictionalContact
 
 
   template <int dim>
-  typename ContactOperator<dim>::Couplings
-  ContactOperator<dim>::mortar_couplings() const
-  {
-    Couplings couplings;
-    for (const Node &node : nodes)
-      if (node.pair >= 0)
-        if (const auto *data = interfaces[node.pair].node(node.dofs[0]))
-          for (const auto &[master, p] : data->masters)
-            for (unsigned int c = 0; c < dim; ++c)
-              if (node.free[c])
-                interfaces[node.pair].resolve_master_dof(
-                  master[c], [&](const types::global_dof_index unknown, const double weight) {
-                    couplings[{node.dofs[c], unknown}] += p * weight;
-                  });
-    return couplings;
-  }
-
-
-
-  template <int dim>
-  typename ContactOperator<dim>::Couplings
-  ContactOperator<dim>::sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const
-  {
-    Couplings couplings;
-    for (unsigned int j = 0; j < nodes.size(); ++j)
-      if (nodes[j].pair >= 0 && forces[j].norm_square() > 0)
-        if (const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]))
-          for (unsigned int l = 0; l < data->masters.size(); ++l)
-            for (unsigned int b = 0; b < dim; ++b)
-              interfaces[nodes[j].pair].resolve_master_dof(
-                data->masters[l].first[b],
-                [&](const types::global_dof_index unknown, const double weight) {
-                  for (unsigned int a = 0; a < dim; ++a)
-                    if (nodes[j].free[a])
-                      couplings[{nodes[j].dofs[a], unknown}] +=
-                        weight * data->master_slides[l][a] * forces[j][b];
-                });
-    return couplings;
-  }
-
-
-
-  template <int dim>
-  std::vector<std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
-  ContactOperator<dim>::turns_per_move(const unsigned int j) const
-  {
-    std::vector<std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>> turns;
-    if (nodes[j].pair < 0 || pair_normal_lengths[j] == 0)
-      return turns;
-    const auto *data = interfaces[nodes[j].pair].node(nodes[j].dofs[0]);
-    if (data == nullptr)
-      return turns;
-    // t_n = P N / |P N| (P: the free components, N the unit averaged
-    // normal) turns by (I - t_n t_n^T) P dN / |P N|; what the node
-    // touches, its outward normal, by minus that.
-    const Tensor<1, dim> &n      = nodes[j].into_obstacle;
-    const Tensor<2, dim>  across = Tensor<2, dim>(unit_symmetric_tensor<dim>()) - outer_product(n, n);
-    for (const auto &[dofs, derivative] : data->normal_derivatives)
-      {
-        Tensor<2, dim> free_derivative = derivative;
-        for (unsigned int c = 0; c < dim; ++c)
-          if (!nodes[j].free[c])
-            free_derivative[c] = Tensor<1, dim>();
-        turns.emplace_back(dofs, -across * free_derivative / pair_normal_lengths[j]);
-      }
-    return turns;
-  }
-
-
-
-  template <int dim>
-  typename ContactOperator<dim>::Couplings
-  ContactOperator<dim>::turn_couplings(const std::vector<Tensor<1, dim>> *forces) const
-  {
-    Couplings couplings;
-    for (unsigned int j = 0; j < nodes.size(); ++j)
-      {
-        if (forces != nullptr && (*forces)[j].norm_square() == 0)
-          continue;
-        // The turn itself, or the force of the frame's turn
-        // (turning_force(), linear in the turn).
-        Tensor<2, dim> per_turn = unit_symmetric_tensor<dim>();
-        if (forces != nullptr)
-          {
-            const Tensor<1, dim> &n   = nodes[j].into_obstacle;
-            const double          r_n = n * (*forces)[j];
-            per_turn = r_n * per_turn - outer_product(n, (*forces)[j] - r_n * n);
-          }
-        for (const auto &[dofs, turn] : turns_per_move(j))
-          {
-            const Tensor<2, dim> entry = per_turn * turn;
-            for (unsigned int a = 0; a < dim; ++a)
-              if (nodes[j].free[a])
-                for (unsigned int b = 0; b < dim; ++b)
-                  if (entry[a][b] != 0)
-                    couplings[{nodes[j].dofs[a], dofs[b]}] += entry[a][b];
-          }
-      }
-    return couplings;
-  }
-
-
-
-  template <int dim>
   Tensor<1, dim>
   ContactOperator<dim>::gap_slope(const unsigned int j) const
   {
@@ -400,22 +296,6 @@ namespace FrictionalContact
   ContactOperator<3>::nodal_block(const unsigned int,
                                   const Tensor<2, 3> &,
                                   NodalBlock &) const;
-  template typename ContactOperator<2>::Couplings
-  ContactOperator<2>::mortar_couplings() const;
-  template typename ContactOperator<3>::Couplings
-  ContactOperator<3>::mortar_couplings() const;
-  template typename ContactOperator<2>::Couplings
-  ContactOperator<2>::sliding_couplings(const std::vector<Tensor<1, 2>> &) const;
-  template typename ContactOperator<3>::Couplings
-  ContactOperator<3>::sliding_couplings(const std::vector<Tensor<1, 3>> &) const;
-  template std::vector<std::pair<std::array<types::global_dof_index, 2>, Tensor<2, 2>>>
-  ContactOperator<2>::turns_per_move(const unsigned int) const;
-  template std::vector<std::pair<std::array<types::global_dof_index, 3>, Tensor<2, 3>>>
-  ContactOperator<3>::turns_per_move(const unsigned int) const;
-  template typename ContactOperator<2>::Couplings
-  ContactOperator<2>::turn_couplings(const std::vector<Tensor<1, 2>> *) const;
-  template typename ContactOperator<3>::Couplings
-  ContactOperator<3>::turn_couplings(const std::vector<Tensor<1, 3>> *) const;
   template Tensor<1, 2>
   ContactOperator<2>::gap_slope(const unsigned int) const;
   template Tensor<1, 3>

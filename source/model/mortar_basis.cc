@@ -2,6 +2,7 @@
 
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/mortar_basis.h>
+#include <frictional_contact/model/pair_couplings.h>
 
 #include <map>
 
@@ -48,7 +49,7 @@ namespace FrictionalContact
 
     // E: P_jl into the columns of the master unknowns (the contact
     // operator resolves hanging and held master dofs, on any rank).
-    const auto E = contact.mortar_couplings();
+    const auto E = PairCouplings<dim>(contact).basis();
     make_matrix(owned, comm, E, true, basis);
     return Utilities::MPI::sum(E.size(), comm) == 0;
   }
@@ -133,11 +134,11 @@ namespace FrictionalContact
     if (!has_tangent || tangent_itself)
       return;
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                contact.sliding_couplings(forces), false, sliding);
+                PairCouplings<dim>(contact).sliding(forces), false, sliding);
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                contact.turn_couplings(nullptr), false, turns);
+                PairCouplings<dim>(contact).turns(nullptr), false, turns);
     make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                contact.turn_couplings(&forces), false, turning);
+                PairCouplings<dim>(contact).turns(&forces), false, turning);
     tangent_operator.take_geometry(&sliding, &turning);
     sliding_origin = iterate;
   }

@@ -39,8 +39,13 @@ namespace FrictionalContact
    * communication.
    */
   template <int dim>
+  class PairCouplings;
+
+  template <int dim>
   class ContactOperator : public ContactMap<dim>
   {
+    friend class PairCouplings<dim>;
+
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
@@ -228,42 +233,6 @@ namespace FrictionalContact
     {
       return to_local(j, turning_force(j, r_j, turn));
     }
-
-    /// Entries of a matrix by (row, column), summed.
-    using Couplings =
-      std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>;
-
-    /**
-     * (slave dof, master unknown) -> P_jl for every free displacement
-     * component of every pair's slave node on this rank and every unknown
-     * its mortar row reaches: u_S = w_S + sum_l P_jl u_l is the basis of
-     * MortarBasis, with a hanging master dof replaced by the dofs it hangs
-     * from and a held one left out.
-     */
-    Couplings
-    mortar_couplings() const;
-
-    /**
-     * The same couplings for the change of the master share
-     * sum_j P_jl f_j of the reactions @p forces (Cartesian, one per node)
-     * as the slave nodes slide: s_a f_b for the slave's free component a
-     * and the master's component b, with dP_jl = s . delta
-     * (MortarInterface::SlaveNode::master_slides).
-     */
-    Couplings
-    sliding_couplings(const std::vector<Tensor<1, dim>> &forces) const;
-
-    /**
-     * How the frames of pairs of two bodies turn with the slave surface
-     * (MortarInterface::SlaveNode::normal_derivatives, where the rows
-     * follow the iterates; empty elsewhere): (slave dof, dof of a vertex
-     * that turns its normal) -> entry, for the free components of the
-     * slave node. Without @p forces, the turn of what the node touches
-     * (as normal_turns()); with them (Cartesian, one per node), the force
-     * of the turning frame, turning_force() (none where a node has none).
-     */
-    Couplings
-    turn_couplings(const std::vector<Tensor<1, dim>> *forces) const;
 
     /// How candidate j's gap changes as it slides along a deformable
     /// master, in its frame (MortarInterface::SlaveNode::gap_slope); zero
@@ -516,11 +485,6 @@ namespace FrictionalContact
     describe_boundaries(const BoundaryNames &names) const;
 
   private:
-    /// The turn of what pair node j touches per move of each vertex of
-    /// its slave faces (turn_couplings()).
-    std::vector<std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
-    turns_per_move(const unsigned int j) const;
-
     /**
      * At a node whose frame turns, the change of its contact force T_j r_j
      * (@p r_j held, in its frame) as the outward normal n of what it

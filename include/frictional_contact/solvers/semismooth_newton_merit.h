@@ -1,0 +1,177 @@
+#pragma once
+
+#include <frictional_contact/solvers/semismooth_newton_linearization.h>
+
+#include <array>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace FrictionalContact
+{
+  namespace SemismoothNewton
+  {
+    /**
+     * The merit of the line search at the point t of the segment from the
+     * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
+     * complementarity functions of all nodes, scaled by c_j, plus the
+     * squared force balance residual, scaled by the mean c. For a linear
+     * law the residual and the reactions are linear along the segment. For
+     * a nonlinear one, @p nonlinear_residual gives the residual at t,
+     * N(du) - p - T ((1 - t) r_0 + t r_1) (nullptr where a cell inverts),
+     * and the reactions of the nodes in contact (@p conditions) take, as r_1
+     * did at t = 1, its part that the straight line misses, N(du) - (1 - t)
+     * N(du_0) - t N(du_1): with the reactions interpolated alone, a long
+     * Newton step's curvature entered every short step's merit to first
+     * order, and the merit rose along steps that descend. Collective.
+     */
+    template <int dim>
+    class MeritAlongStep
+    {
+    public:
+      MeritAlongStep(const IncrementalProblem<dim>     &problem,
+                     const std::vector<NodeCondition>  &conditions,
+                     const std::vector<double>         &c,
+                     const std::vector<double>         &c_t,
+                     const bool                         friction,
+                     const double                       mean_c,
+                     const Vector                      &du_0,
+                     const Vector                      &du_1,
+                     const std::vector<Tensor<1, dim>> &r_0,
+                     const std::vector<Tensor<1, dim>> &r_1,
+                     const Vector                      &balance_0,
+                     const Vector                      &balance_1,
+                     Vector                            &scratch,
+                     std::function<const Vector *(double)> nonlinear_residual = {})
+        : problem(problem)
+        , conditions(conditions)
+        , c(c)
+        , c_t(c_t)
+        , friction(friction)
+        , mean_c(mean_c)
+        , du_0(du_0)
+        , du_1(du_1)
+        , r_0(r_0)
+        , r_1(r_1)
+        , scratch(scratch)
+        , nonlinear_residual(std::move(nonlinear_residual))
+      {
+        // The nodes in contact's parts of both ends' residuals, for the
+        // reactions the straight line misses (nonlinear laws).
+        if (this->nonlinear_residual)
+          {
+            balance_at_nodes.resize(c.size());
+            for (unsigned int j = 0; j < c.size(); ++j)
+              if (conditions[j] != NodeCondition::none)
+                balance_at_nodes[j] = {{problem.contact.local_part(j, balance_0),
+                                        problem.contact.local_part(j, balance_1)}};
+          }
+        // Frames that follow the configuration turn along the step as the
+        // Newton tangent has them turn (to first order).
+        if (problem.contact.frames_follow_configuration() || problem.pair_frame_turns)
+          {
+            scratch = du_1;
+            scratch -= du_0;
+            if (problem.pair_frame_turns)
+              problem.pair_frame_turns(scratch, step_turns);
+            else
+              problem.contact.normal_turns(scratch, step_turns);
+          }
+        balance_a = balance_0.norm_sqr();
+        balance_b = balance_0 * balance_1 - balance_a;
+        scratch   = balance_1;
+        scratch -= balance_0;
+        balance_c = scratch.norm_sqr();
+      }
+
+      double
+      operator()(const double t) const
+      {
+        const bool    inside   = nonlinear_residual && t > 0 && t < 1;
+        const Vector *residual = inside ? nonlinear_residual(t) : nullptr;
+        if (inside && residual == nullptr)
+          return std::numeric_limits<double>::infinity();
+        if (inside)
+          scratch = *residual;
+        double sum = 0;
+        for (unsigned int j = 0; j < c.size(); ++j)
+          {
+            Tensor<1, dim> missed;
+            if (inside && conditions[j] != NodeCondition::none)
+              {
+                const ContactMap<dim> &contact = problem.contact;
+                missed = contact.local_part(j, *residual) -
+                         (1 - t) * balance_at_nodes[j][0] -
+                         t * balance_at_nodes[j][1];
+                contact.add_reaction(j, -missed, scratch);
+              }
+            const NodeAtStep at = node_at(j, t, missed);
+            const double phi_n = at.r[0] - std::min(0., at.augmented_normal);
+            Tensor<1, dim> z     = at.z;
+            if (z.norm() > at.bound)
+              z *= at.bound / z.norm();
+            Tensor<1, dim> phi_t = at.r - z;
+            phi_t[0]             = 0;
+            // A node whose normal direction a support holds has c_j = 0
+            // (no free normal component): the mean scale serves it.
+            sum += (phi_n * phi_n + phi_t * phi_t) / (c[j] > 0 ? c[j] : mean_c);
+          }
+        const double balance =
+          inside ? scratch.norm_sqr() :
+                   balance_a + 2 * t * balance_b + t * t * balance_c;
+        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
+               balance / mean_c;
+      }
+
+    private:
+      /// A node's reaction, augmented normal reaction r_n + c_j g, friction
+      /// bound and augmented tangential reaction z at a point of the step.
+      struct NodeAtStep
+      {
+        Tensor<1, dim> r;
+        double         augmented_normal;
+        double         bound;
+        Tensor<1, dim> z;
+      };
+
+      /// Node @p j at the point @p t, its reaction corrected by @p missed.
+      NodeAtStep
+      node_at(const unsigned int j, const double t, const Tensor<1, dim> &missed) const
+      {
+        const Tensor<1, dim> u_j =
+          (1 - t) * problem.relative_displacement(j, du_0) +
+          t * problem.relative_displacement(j, du_1);
+        NodeAtStep at;
+        at.r = (1 - t) * r_0[j] + t * r_1[j] + missed;
+        if (!step_turns.empty())
+          at.r += problem.contact.frame_turn(j, at.r, t * step_turns[j]);
+        at.augmented_normal =
+          at.r[0] + c[j] * (problem.gaps[j] - problem.approach(j, u_j));
+        const double mu_j = friction ? problem.contact.friction_coefficient(j) : 0.;
+        at.bound          = mu_j * std::max(0., -at.augmented_normal);
+        at.z              = at.r - c_t[j] * u_j;
+        at.z[0]           = 0;
+        return at;
+      }
+
+      const IncrementalProblem<dim>     &problem;
+      const std::vector<NodeCondition>  &conditions;
+      const std::vector<double>         &c;
+      const std::vector<double>         &c_t;
+      const bool                         friction;
+      const double                       mean_c;
+      const Vector                      &du_0;
+      const Vector                      &du_1;
+      const std::vector<Tensor<1, dim>> &r_0;
+      const std::vector<Tensor<1, dim>> &r_1;
+      Vector                            &scratch;
+      /// At each node in contact, its parts of the residuals at t = 0 and 1
+      /// (nonlinear laws only).
+      std::vector<std::array<Tensor<1, dim>, 2>> balance_at_nodes;
+      double                             balance_a, balance_b, balance_c;
+      const std::function<const Vector *(double)> nonlinear_residual;
+      /// The turn of each frame per unit step (empty for fixed frames).
+      std::vector<Tensor<1, dim>>         step_turns;
+    };
+  } // namespace SemismoothNewton
+} // namespace FrictionalContact
