@@ -403,16 +403,8 @@ namespace FrictionalContact
           N                      = cross_product_3d(a, b);
           // d(a x b) = -[b]x da + [a]x db, [v]x w = v x w.
           const auto cross_matrix = [](const Tensor<1, dim> &v) {
-            Tensor<2, dim> m;
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                Tensor<1, dim> e;
-                e[k]                              = 1;
-                const Tensor<1, dim> column       = cross_product_3d(v, e);
-                for (unsigned int i = 0; i < dim; ++i)
-                  m[i][k] = column[i];
-              }
-            return m;
+            return Tensor<2, dim>(
+              {{0., -v[2], v[1]}, {v[2], 0., -v[0]}, {-v[1], v[0], 0.}});
           };
           const double along_a[4] = {-0.5, 0.5, -0.5, 0.5};
           const double along_b[4] = {-0.5, -0.5, 0.5, 0.5};
