@@ -341,8 +341,7 @@ namespace FrictionalContact
       {
         bool penetrates = false;
         for (unsigned int j = 0; j < contact.n_local() && !penetrates; ++j)
-          penetrates = problem.approach(j, problem.relative_displacement(j, du)) >
-                       problem.gaps[j];
+          penetrates = problem.gap_at(j, problem.relative_displacement(j, du)) < 0;
         separates = !Utilities::MPI::logical_or(penetrates, comm);
       }
     if (separates)
@@ -457,8 +456,7 @@ namespace FrictionalContact
         mortar->force_to_w(force, iterate.load);
       }
     // Where the rows follow the iterates, so does the gap as a node
-    // slides: g_j - approach() is the gap at the iterate, to first order
-    // about it.
+    // slides: gap_at() is the gap at the iterate, to first order about it.
     problem.gap_slopes.resize(rows_change ? r.size() : 0);
     for (unsigned int j = 0; j < r.size(); ++j)
       {
@@ -492,8 +490,7 @@ namespace FrictionalContact
           r[j] - contact.to_local(j, state.contact_forces[j]));
         results.local_displacement.push_back(
           problem.relative_displacement(j, outcome.du_solved));
-        results.gap.push_back(problem.gaps[j] -
-                              problem.approach(j, results.local_displacement.back()));
+        results.gap.push_back(problem.gap_at(j, results.local_displacement.back()));
         results.state.push_back(contact.friction_cone(j).state(r[j]));
         const double area = contact.nodal_area(j);
         results.pressure.push_back(area > 0 ? -r[j][0] / area : 0.);

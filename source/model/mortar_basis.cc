@@ -3,7 +3,6 @@
 #include <frictional_contact/model/mortar_basis.h>
 #include <frictional_contact/model/pair_couplings.h>
 
-#include <map>
 
 namespace FrictionalContact
 {
@@ -12,11 +11,10 @@ namespace FrictionalContact
     /// @p matrix (rows: the locally owned dofs @p owned) with @p entries
     /// and, with @p identity, ones on the diagonal.
     void
-    make_matrix(const IndexSet &owned,
-                const MPI_Comm  comm,
-                const std::map<std::pair<types::global_dof_index, types::global_dof_index>,
-                               double>  &entries,
-                const bool                identity,
+    make_matrix(const IndexSet                 &owned,
+                const MPI_Comm                  comm,
+                const Couplings                &entries,
+                const bool                      identity,
                 TrilinosWrappers::SparseMatrix &matrix)
     {
       TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);

@@ -6,7 +6,7 @@ namespace FrictionalContact
 {
   // How the slave nodes' averaged normals turn as the slave surface
   // moves: the Newton tangent's part from the turning frames of the pairs
-  // whose rows follow the iterates (ContactOperator::turning_couplings()).
+  // whose rows follow the iterates (PairCouplings::turns()).
 
 
 

@@ -20,7 +20,7 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-        const double         gap = problem.gaps[j] - problem.approach(j, u_j);
+        const double         gap = problem.gap_at(j, u_j);
         Tensor<1, dim>       v   = u_j;
         v[0] = -gap - contact.friction_coefficient(j) *
                         FrictionCone<dim>::tangential_norm(u_j);

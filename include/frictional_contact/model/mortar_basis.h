@@ -26,8 +26,8 @@ namespace FrictionalContact
    * they hang from; fixed and prescribed ones drop out (their increment is
    * in the lifting). Built anew at each increment, from the contact
    * operator's mortar rows, and within it where they change at every
-   * Newton iterate. Owns Q, the transformed matrices and the rows'
-   * Newton tangent's terms of the moving geometry, H and F
+   * Newton iterate. Owns Q, the transformed matrices and the Newton
+   * tangent's terms of the moving geometry, H, G and F
    * (follow_reactions()).
    */
   template <int dim>
@@ -116,7 +116,7 @@ namespace FrictionalContact
      * it); and the slave nodes' frames turn with the slave surface, which
      * at a slipping node turns the friction force and the normal reaction
      * into each other: F u, the force of the turning frame
-     * (ContactOperator::turn_couplings()) at the node's own unknowns in
+     * (PairCouplings::turns()) at the node's own unknowns in
      * w, as for an obstacle's frames (the reactions keep their Cartesian
      * directions across a geometry; only the cone conditions see the
      * turn). Adds H^T + F Q to K_T,w. @p iterate (in w) is where the

@@ -49,6 +49,19 @@ namespace FrictionalContact
 
 
 
+  /// The normal component n that, with the tangential components u_t of
+  /// @p u, closes a gap @p gap that changes along the slide by @p slope:
+  /// n - slope . (n, u_t) = gap (IncrementalProblem::gap_at()).
+  template <int dim>
+  inline double
+  normal_closing_gap(const Tensor<1, dim> &slope, Tensor<1, dim> u, const double gap)
+  {
+    u[0] = 0;
+    return (gap + slope * u) / (1. - slope[0]);
+  }
+
+
+
   /**
    * One incremental problem of the paper, eq. (9): find du and r with
    * K du - p = T r and the cone complementarity at every candidate, where
@@ -89,7 +102,7 @@ namespace FrictionalContact
     /// Where a pair's mortar rows follow the Newton iterates: how each
     /// node's gap changes as it moves relative to its master, in its
     /// frame: the row's slide along the master (empty elsewhere; see
-    /// approach()).
+    /// gap_at()).
     std::vector<Tensor<1, dim>> gap_slopes;
     /// The bodies only contact holds (none for most scenes).
     ContactHeldBodies contact_held;
@@ -143,26 +156,21 @@ namespace FrictionalContact
       return contact.local_part(j, du) - obstacle_slip[j];
     }
 
-    /// How far node j has closed its gap at the relative displacement
-    /// @p u_j: the gap is g_j minus this. Its normal component, less the
-    /// gap's change as the node slides along a master whose rows follow
-    /// the iterates (gap_slopes).
+    /// Node j's gap at the relative displacement @p u_j: g_j less its
+    /// normal component, and plus the gap's change as the node slides
+    /// along a master whose rows follow the iterates (gap_slopes).
     double
-    approach(const unsigned int j, const Tensor<1, dim> &u_j) const
+    gap_at(const unsigned int j, const Tensor<1, dim> &u_j) const
     {
-      return gap_slopes.empty() ? u_j[0] : u_j[0] - gap_slopes[j] * u_j;
+      return gaps[j] - (gap_slopes.empty() ? u_j[0] : u_j[0] - gap_slopes[j] * u_j);
     }
 
     /// The normal component that closes node j's gap exactly
-    /// (approach() = g_j) with the tangential components of @p u_j.
+    /// (gap_at() = 0) with the tangential components of @p u_j.
     double
     closing_normal(const unsigned int j, const Tensor<1, dim> &u_j) const
     {
-      if (gap_slopes.empty())
-        return gaps[j];
-      Tensor<1, dim> tangential = u_j;
-      tangential[0]             = 0;
-      return (gaps[j] + gap_slopes[j] * tangential) / (1. - gap_slopes[j][0]);
+      return gap_slopes.empty() ? gaps[j] : normal_closing_gap(gap_slopes[j], u_j, gaps[j]);
     }
   };
 

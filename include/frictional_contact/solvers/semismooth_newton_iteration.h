@@ -127,8 +127,7 @@ namespace FrictionalContact
       std::vector<double> gap(sets.conditions.size());
       for (unsigned int j = 0; j < gap.size(); ++j)
         {
-          gap[j] = problem.gaps[j] -
-                   problem.approach(j, problem.relative_displacement(j, du));
+          gap[j] = problem.gap_at(j, problem.relative_displacement(j, du));
           for (unsigned int b = 0; b < n_bodies; ++b)
             if (held.held_by_candidate[j] & (std::uint64_t(1) << b))
               smallest[b] = std::min(smallest[b], gap[j]);

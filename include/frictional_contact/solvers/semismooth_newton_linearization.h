@@ -86,12 +86,9 @@ namespace FrictionalContact
               Tensor<1, dim>       removed = part;
               if (conditions[j] == NodeCondition::normal_fixed)
                 {
-                  // approach(j, part - removed) = 0 with part's tangent.
-                  Tensor<1, dim> tangential = part;
-                  tangential[0]             = 0;
-                  removed                   = Tensor<1, dim>();
-                  removed[0] = part[0] - gap_slopes[j] * tangential /
-                                           (1. - gap_slopes[j][0]);
+                  // The gap's change along the step is zero.
+                  removed    = Tensor<1, dim>();
+                  removed[0] = part[0] - normal_closing_gap(gap_slopes[j], part, 0.);
                 }
               contact.add_reaction(j, -removed, v);
             }
@@ -289,8 +286,7 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < n; ++j)
       {
         const Tensor<1, dim> u_j = problem.relative_displacement(j, du);
-        const double sigma =
-          -r[j][0] - c[j] * (problem.gaps[j] - problem.approach(j, u_j));
+        const double sigma = -r[j][0] - c[j] * problem.gap_at(j, u_j);
         Tensor<1, dim> zeta = r[j] - sets.c_t[j] * u_j;
         zeta[0]             = 0;
         const double zeta_norm = zeta.norm();

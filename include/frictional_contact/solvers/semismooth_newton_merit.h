@@ -146,7 +146,7 @@ namespace FrictionalContact
         if (!step_turns.empty())
           at.r += problem.contact.frame_turn(j, at.r, t * step_turns[j]);
         at.augmented_normal =
-          at.r[0] + c[j] * (problem.gaps[j] - problem.approach(j, u_j));
+          at.r[0] + c[j] * problem.gap_at(j, u_j);
         const double mu_j = friction ? problem.contact.friction_coefficient(j) : 0.;
         at.bound          = mu_j * std::max(0., -at.augmented_normal);
         at.z              = at.r - c_t[j] * u_j;
