@@ -4,6 +4,32 @@
 
 namespace FrictionalContact
 {
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::turning_force(const unsigned int    j,
+                                      const Tensor<1, dim> &r_j,
+                                      const Tensor<1, dim> &turn) const
+  {
+    Tensor<1, dim> tangential = r_j;
+    tangential[0]             = 0;
+    return r_j[0] * turn -
+           (to_cartesian(j, tangential) * turn) * nodes[j].into_obstacle;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ContactOperator<dim>::free_part(const unsigned int j, Tensor<1, dim> v) const
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!nodes[j].free[c])
+        v[c] = 0;
+    return v;
+  }
+
+
+
   // The nodal algebra of ContactOperator: the local frames of the
   // candidates, T and the forces of both sides of a pair, the normal
   // stiffness and nodal blocks the Newton method asks for, and the largest
@@ -320,4 +346,16 @@ namespace FrictionalContact
   ContactOperator<3>::add_frame_stiffness(const std::vector<Tensor<1, 3>> &,
                                           const Vector &,
                                           Vector &) const;
+  template Tensor<1, 2>
+  ContactOperator<2>::turning_force(const unsigned int,
+                                      const Tensor<1, 2> &,
+                                      const Tensor<1, 2> &) const;
+  template Tensor<1, 2>
+  ContactOperator<2>::free_part(const unsigned int, Tensor<1, 2>) const;
+  template Tensor<1, 3>
+  ContactOperator<3>::turning_force(const unsigned int,
+                                      const Tensor<1, 3> &,
+                                      const Tensor<1, 3> &) const;
+  template Tensor<1, 3>
+  ContactOperator<3>::free_part(const unsigned int, Tensor<1, 3>) const;
 } // namespace FrictionalContact

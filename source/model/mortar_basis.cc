@@ -1,41 +1,9 @@
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-
 #include <frictional_contact/model/mortar_basis.h>
 #include <frictional_contact/model/pair_couplings.h>
 
 
 namespace FrictionalContact
 {
-  namespace
-  {
-    /// @p matrix (rows: the locally owned dofs @p owned) with @p entries
-    /// and, with @p identity, ones on the diagonal.
-    void
-    make_matrix(const IndexSet                 &owned,
-                const MPI_Comm                  comm,
-                const Couplings                &entries,
-                const bool                      identity,
-                TrilinosWrappers::SparseMatrix &matrix)
-    {
-      TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
-      if (identity)
-        for (const auto i : owned)
-          pattern.add(i, i);
-      for (const auto &[entry, value] : entries)
-        pattern.add(entry.first, entry.second);
-      pattern.compress();
-      matrix.reinit(pattern);
-      if (identity)
-        for (const auto i : owned)
-          matrix.set(i, i, 1.);
-      for (const auto &[entry, value] : entries)
-        matrix.set(entry.first, entry.second, value);
-      matrix.compress(VectorOperation::insert);
-    }
-  } // namespace
-
-
-
   template <int dim>
   bool
   MortarBasis<dim>::make_basis(const ElasticBody<dim>     &body,
@@ -47,7 +15,7 @@ namespace FrictionalContact
     // E: P_jl into the columns of the master unknowns (the contact
     // operator resolves hanging and held master dofs, on any rank).
     const auto E = PairCouplings<dim>(contact).basis();
-    make_matrix(owned, comm, E, true, basis);
+    basis.take(owned, comm, E, true);
     return Utilities::MPI::sum(E.size(), comm) == 0;
   }
 
@@ -76,13 +44,13 @@ namespace FrictionalContact
         tangent_itself = std::make_unique<AssembledStiffness>(stiffness);
       }
     else
-      transform_to_basis(basis, stiffness, transformed_stiffness);
+      transform_to_basis(basis.matrix, stiffness, transformed_stiffness);
 
     const VolumetricSplit volumetric = body.volumetric_split();
     if (volumetric.reduced_stiffness != nullptr)
       {
-        transform_to_basis(basis, *volumetric.reduced_stiffness, transformed_reduced_stiffness);
-        volumetric.divergence->mmult(transformed_divergence, basis);
+        transform_to_basis(basis.matrix, *volumetric.reduced_stiffness, transformed_reduced_stiffness);
+        volumetric.divergence->mmult(transformed_divergence, basis.matrix);
         split                    = volumetric;
         split.reduced_stiffness  = &transformed_reduced_stiffness;
         split.divergence         = &transformed_divergence;
@@ -130,13 +98,13 @@ namespace FrictionalContact
   {
     if (!has_tangent || tangent_itself)
       return;
-    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                PairCouplings<dim>(contact).sliding(forces), false, sliding);
-    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                PairCouplings<dim>(contact).turns(nullptr), false, turns);
-    make_matrix(body.locally_owned_dofs(), body.get_mpi_communicator(),
-                PairCouplings<dim>(contact).turns(&forces), false, turning);
-    tangent_operator.take_geometry(&sliding, &turning);
+    sliding.take(body.locally_owned_dofs(), body.get_mpi_communicator(),
+                 PairCouplings<dim>(contact).sliding(forces), false);
+    turns.take(body.locally_owned_dofs(), body.get_mpi_communicator(),
+               PairCouplings<dim>(contact).turns(nullptr), false);
+    turning.take(body.locally_owned_dofs(), body.get_mpi_communicator(),
+                 PairCouplings<dim>(contact).turns(&forces), false);
+    tangent_operator.take_geometry(&sliding.matrix, &turning.matrix);
     sliding_origin = iterate;
   }
 
@@ -153,7 +121,7 @@ namespace FrictionalContact
     slide = w;
     slide -= sliding_origin;
     slide *= sign;
-    sliding.Tvmult_add(force_w, slide);
+    sliding.matrix.Tvmult_add(force_w, slide);
   }
 
 
@@ -172,8 +140,8 @@ namespace FrictionalContact
         step_in_u.reinit(step, true);
         turn_of_step.reinit(step, true);
       }
-    basis.vmult(step_in_u, step);
-    turns.vmult(turn_of_step, step_in_u);
+    basis.matrix.vmult(step_in_u, step);
+    turns.matrix.vmult(turn_of_step, step_in_u);
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       node_turns[j] = contact.nodal_value(j, turn_of_step);
   }
@@ -184,7 +152,7 @@ namespace FrictionalContact
   void
   MortarBasis<dim>::force_to_w(const Vector &force, Vector &force_w) const
   {
-    basis.Tvmult(force_w, force);
+    basis.matrix.Tvmult(force_w, force);
   }
 
 
@@ -194,7 +162,7 @@ namespace FrictionalContact
   MortarBasis<dim>::force_to_u(const Vector &force_w, Vector &force) const
   {
     // (I - E^T) f_w = 2 f_w - Q^T f_w.
-    basis.Tvmult(force, force_w);
+    basis.matrix.Tvmult(force, force_w);
     force.sadd(-1., 2., force_w);
   }
 
@@ -204,7 +172,7 @@ namespace FrictionalContact
   void
   MortarBasis<dim>::displacement_to_u(const Vector &w, Vector &u) const
   {
-    basis.vmult(u, w);
+    basis.matrix.vmult(u, w);
   }
 
 
@@ -214,7 +182,7 @@ namespace FrictionalContact
   MortarBasis<dim>::displacement_to_w(const Vector &u, Vector &w) const
   {
     // (I - E) u = 2 u - Q u.
-    basis.vmult(w, u);
+    basis.matrix.vmult(w, u);
     w.sadd(-1., 2., u);
   }
 
@@ -224,9 +192,9 @@ namespace FrictionalContact
   std::vector<std::vector<double>>
   MortarBasis<dim>::modes_to_w(const std::vector<std::vector<double>> &modes) const
   {
-    const IndexSet &owned = basis.locally_owned_domain_indices();
+    const IndexSet &owned = basis.matrix.locally_owned_domain_indices();
     std::vector<std::vector<double>> transformed;
-    Vector u(owned, basis.get_mpi_communicator()), w(u);
+    Vector u(owned, basis.matrix.get_mpi_communicator()), w(u);
     for (const std::vector<double> &mode : modes)
       {
         std::copy(mode.begin(), mode.end(), u.begin());

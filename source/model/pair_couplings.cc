@@ -1,10 +1,50 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/pair_couplings.h>
 
 namespace FrictionalContact
 {
+  void
+  CouplingMatrix::take(const IndexSet  &owned,
+                       const MPI_Comm   comm,
+                       const Couplings &entries,
+                       const bool       identity)
+  {
+    const bool in_place = matrix.m() > 0 && matrix.locally_owned_range_indices() == owned &&
+                          positions.size() == entries.size() &&
+                          std::equal(entries.begin(), entries.end(), positions.begin(),
+                                     [](const auto &entry, const auto &position) {
+                                       return entry.first == position;
+                                     });
+    if (Utilities::MPI::logical_or(!in_place, comm))
+      {
+        TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
+        if (identity)
+          for (const auto i : owned)
+            pattern.add(i, i);
+        for (const auto &[position, value] : entries)
+          pattern.add(position.first, position.second);
+        pattern.compress();
+        matrix.reinit(pattern);
+        if (identity)
+          for (const auto i : owned)
+            matrix.set(i, i, 1.);
+        positions.clear();
+        for (const auto &[position, value] : entries)
+          positions.push_back(position);
+      }
+    // In place, every entry is set again: the pattern holds no others but
+    // the identity's, which no entry changes unless it set it before.
+    for (const auto &[position, value] : entries)
+      matrix.set(position.first, position.second, value);
+    matrix.compress(VectorOperation::insert);
+  }
+
+
+
   template <int dim>
   Couplings
   PairCouplings<dim>::basis() const

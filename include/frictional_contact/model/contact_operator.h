@@ -498,23 +498,11 @@ namespace FrictionalContact
     Tensor<1, dim>
     turning_force(const unsigned int    j,
                   const Tensor<1, dim> &r_j,
-                  const Tensor<1, dim> &turn) const
-    {
-      Tensor<1, dim> tangential = r_j;
-      tangential[0]             = 0;
-      return r_j[0] * turn -
-             (to_cartesian(j, tangential) * turn) * nodes[j].into_obstacle;
-    }
+                  const Tensor<1, dim> &turn) const;
 
     /// @p v without the components that fixed boundaries hold at node j.
     Tensor<1, dim>
-    free_part(const unsigned int j, Tensor<1, dim> v) const
-    {
-      for (unsigned int c = 0; c < dim; ++c)
-        if (!nodes[j].free[c])
-          v[c] = 0;
-      return v;
-    }
+    free_part(const unsigned int j, Tensor<1, dim> v) const;
 
     /// Turns candidate j's tangents with its normal, now @p into, by the
     /// least rotation (continuous, so that the tangential reactions keep

@@ -7,6 +7,7 @@
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/mortar_tangent.h>
+#include <frictional_contact/model/pair_couplings.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
 #include <memory>
@@ -151,18 +152,18 @@ namespace FrictionalContact
     bool
     make_basis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
 
-    TrilinosWrappers::SparseMatrix basis;
+    CouplingMatrix                 basis;
     /// H, the frames' turns G and their forces F of follow_reactions(),
     /// the iterate where they were made, and work vectors.
-    TrilinosWrappers::SparseMatrix sliding;
-    TrilinosWrappers::SparseMatrix turns;
-    TrilinosWrappers::SparseMatrix turning;
+    CouplingMatrix                 sliding;
+    CouplingMatrix                 turns;
+    CouplingMatrix                 turning;
     Vector                         sliding_origin;
     mutable Vector                 slide, step_in_u, turn_of_step;
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};
-    MortarTangent                  tangent_operator{basis};
+    MortarTangent                  tangent_operator{basis.matrix};
     bool                           has_tangent = false;
     /// Where Q = I (no mortar row reaches a master dof: every master is a
     /// rigid tool), K_T,w is the tangent itself, made in the body's

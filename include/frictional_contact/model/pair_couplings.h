@@ -1,8 +1,11 @@
 #pragma once
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <utility>
@@ -18,6 +21,31 @@ namespace FrictionalContact
   /// Entries of a matrix by (row, column), summed.
   using Couplings =
     std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>;
+
+  /**
+   * A Trilinos matrix of Couplings (rows: the locally owned dofs), made
+   * again as they change: where every rank's entries sit where they sat
+   * the last time, their new values are set in the matrix's pattern
+   * instead of a new pattern being made (the geometry's matrices of a pair
+   * whose rows follow the Newton iterates keep their pattern while no
+   * slave node changes segments). Owns the matrix and those positions.
+   */
+  class CouplingMatrix
+  {
+  public:
+    /// The matrix of @p entries, plus the identity with @p identity (an
+    /// entry on the diagonal then replaces its one). Collective.
+    void
+    take(const IndexSet  &owned,
+         const MPI_Comm   comm,
+         const Couplings &entries,
+         const bool       identity);
+
+    TrilinosWrappers::SparseMatrix matrix;
+
+  private:
+    std::vector<Couplings::key_type> positions;
+  };
 
   /**
    * The matrices that the pairs of two bodies give MortarBasis, read off
