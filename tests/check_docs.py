@@ -196,6 +196,7 @@ class Checker:
         self.roots = ["", "source", os.path.join("include", "frictional_contact"),
                       "tests"]
         self.code_text = None
+        self.words_in_code = {}
         self.script_texts = {}
         self.headings = {}
 
@@ -388,7 +389,7 @@ class Checker:
         close = []
         if not looks_like_test and self.tests is not None and "_" in token \
                 and not any(c in token for c in "*?[") and \
-                not re.search(r"\b" + re.escape(token) + r"\b", self.code()):
+                not self.in_code(token):
             close = difflib.get_close_matches(token, self.tests, 1, 0.9)
             looks_like_test = bool(close)
         if looks_like_test and report and self.tests is not None:
@@ -645,6 +646,27 @@ class Checker:
                 with open(os.path.join(self.root, path), errors="replace") as f:
                     parts.append(f.read())
         return "\n".join(parts)
+
+    def in_code(self, word):
+        """Whether the code (code()) has @p word as a word; memoised: pages
+        quote the same names many times, and each search reads all of it."""
+        if word not in self.words_in_code:
+            # As re.search(r"\b" + re.escape(word) + r"\b") would say, by
+            # substring search (a regular expression took seconds here).
+            text = self.code()
+            def is_word(c):
+                return c.isalnum() or c == "_"
+            def boundary(before, after):
+                return is_word(before) != is_word(after)
+            found = False
+            i = text.find(word)
+            while i >= 0 and not found:
+                j = i + len(word)
+                found = boundary(text[i - 1] if i > 0 else " ", word[0]) and \
+                    boundary(word[-1], text[j] if j < len(text) else " ")
+                i = text.find(word, i + 1)
+            self.words_in_code[word] = found
+        return self.words_in_code[word]
 
     def code(self):
         """The text of the code, the tests, the scripts and the CMake files."""
