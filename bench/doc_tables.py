@@ -328,6 +328,24 @@ def finite_strain(root):
                      "increment in elastic solves", "finite / small"], body)
 
 
+def extrapolated_start(root):
+    """bench/extrapolated_start.py: each scene's last pair of rows, with
+    the time of the extrapolated start against the start from no motion."""
+    latest = {}
+    for r in rows(root, "extrapolated-start.csv"):
+        latest.setdefault(r["scene"], {})[r["start"]] = r
+    body = []
+    for scene, starts in latest.items():
+        first = starts["no motion"]
+        for start, r in starts.items():
+            body.append([scene, r["ranks"], start, thousands(r["d"]), r["increments"],
+                         r["newton_iterations"], thousands(r["krylov_iterations"]),
+                         seconds(r["solve_s"]),
+                         f"{float(r['solve_s']) / float(first['solve_s']):.2f}"])
+    return markdown(["scene", "ranks", "start", "d", "increments", "Newton steps",
+                     "Krylov iterations", "solve", "against no motion"], body)
+
+
 def ironing(root):
     """bench/ironing.py: each run's drag and press with the die in the
     middle of its slide (t = 1.5), their change from the coarser mesh, and
@@ -421,6 +439,7 @@ TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,
+    "extrapolated-start": extrapolated_start,
     "ironing-3d": ironing_3d,
     "ironing-3d-scale": ironing_3d_scale,
     "linear-speed": linear_speed,

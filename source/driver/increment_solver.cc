@@ -112,6 +112,8 @@ namespace FrictionalContact
   {
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
+    if (warm_start == nullptr)
+      started_from_last_motion = false;
 
     // The increment of the prescribed displacements, and the configuration
     // it leads to before the rest of the increment is solved for.
@@ -231,7 +233,8 @@ namespace FrictionalContact
                   mortar->frame_turns(contact, step, turns);
                 };
           }
-        solve_contact(model, state, start, outcome, record_history, timer, warm_start);
+        solve_contact(model, state, start, t_end - t_start, outcome, record_history,
+                      timer, warm_start);
         outcome.problem->follow_geometry  = nullptr;
         outcome.problem->pair_frame_turns = nullptr;
         if (!result.converged)
@@ -250,6 +253,11 @@ namespace FrictionalContact
     if (mortar)
       mortar->displacement_to_u(outcome.du_solved, outcome.du);
     body.get_constraints().distribute(outcome.du);
+    if (solver.start_from_last_increment)
+      {
+        last_motion = outcome.du;
+        last_length = t_end - t_start;
+      }
     outcome.du += lifting;
     return outcome;
   }
@@ -309,6 +317,7 @@ namespace FrictionalContact
   IncrementSolver<dim>::solve_contact(const Model<dim>      &model,
                                       const State<dim>      &state,
                                       const TrilinosWrappers::MPI::Vector &start,
+                                      const double           length,
                                       IncrementOutcome<dim> &outcome,
                                       const bool             record_history,
                                       TimerOutput           &timer,
@@ -358,19 +367,32 @@ namespace FrictionalContact
         return;
       }
 
-    // Warm start: the reactions of the previous increment, du = 0; or
-    // those of another solve of this increment, and its du.
+    // Warm start: the reactions of the previous increment, and du = 0 or
+    // the previous increment's motion scaled to this one; or the
+    // reactions of another solve of this increment, and its du.
     const std::vector<Tensor<1, dim>> &forces =
       warm_start ? warm_start->forces : state.contact_forces;
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       r[j] = contact.friction_cone(j).project(contact.to_local(j, forces[j]));
     du = 0;
-    if (warm_start)
+    const bool extrapolate =
+      !warm_start && last_length > 0 &&
+      !Utilities::MPI::logical_or(last_motion.locally_owned_elements() !=
+                                    du.locally_owned_elements(),
+                                  comm);
+    if (warm_start || extrapolate)
       {
+        TrilinosWrappers::MPI::Vector motion =
+          warm_start ? warm_start->du : last_motion;
+        if (extrapolate)
+          {
+            motion *= length / last_length;
+            started_from_last_motion = true;
+          }
         if (mortar)
-          mortar->displacement_to_w(warm_start->du, du);
+          mortar->displacement_to_w(motion, du);
         else
-          du = warm_start->du;
+          du = motion;
         model.get_body().get_constraints().set_zero(du);
       }
     if (solver.method->needs_smallest_eigenvalue())

@@ -94,10 +94,12 @@ namespace FrictionalContact
     void
     initialize(const Model<dim> &model);
 
-    /// Drops what refers to the current K, before the mesh changes.
+    /// Drops what refers to the current K or mesh, before the mesh changes.
     void
     release()
     {
+      last_motion.clear();
+      last_length = 0;
       linear_solver.release();
       mortar_cycle.reset();
       geometric.reset();
@@ -126,6 +128,22 @@ namespace FrictionalContact
           const bool              record_history,
           TimerOutput            &timer,
           const WarmStart<dim>   *warm_start = nullptr);
+
+    /// Whether the last solve() without a warm start started from the last
+    /// increment's motion (<Contact solver/Start from the last increment>).
+    bool
+    started_from_last_increment() const
+    {
+      return started_from_last_motion;
+    }
+
+    /// Forgets the last increment's motion: the next solve starts from none
+    /// (where starting from it did not converge: the motion turned).
+    void
+    forget_last_increment()
+    {
+      last_length = 0;
+    }
 
     /// What the contact solver calls its iterations.
     std::string
@@ -187,13 +205,15 @@ namespace FrictionalContact
     void
     prepare_mortar_solves(const ElasticBody<dim> &body, const bool rebuild);
 
-    /// Solves the contact problem of @p outcome from the elastic solution
-    /// in outcome.du_solved (if any), or from @p warm_start; @p start is
-    /// u^l with the prescribed increment.
+    /// Solves the contact problem of @p outcome, an increment of length
+    /// @p length in time, from @p warm_start if given, else from the last
+    /// increment's motion where asked for (last_motion), else from no
+    /// displacement; @p start is u^l with the prescribed increment.
     void
     solve_contact(const Model<dim>                    &model,
                   const State<dim>                    &state,
                   const TrilinosWrappers::MPI::Vector &start,
+                  const double                         length,
                   IncrementOutcome<dim>               &outcome,
                   const bool                           record_history,
                   TimerOutput                         &timer,
@@ -288,6 +308,15 @@ namespace FrictionalContact
     /// builds it again on the tangent (note_krylov_growth()).
     double krylov_per_step_after_build = 0;
     bool   rebuild_for_tangent         = false;
+    /// The displacement increment of the last increment solved on this
+    /// mesh, without its prescribed part, and its length in time (empty
+    /// unless <Start from the last increment>; a converged solve the driver
+    /// then rejected, such as a pass of the pairs' geometry, counts too:
+    /// it is only where the next solve starts).
+    TrilinosWrappers::MPI::Vector last_motion;
+    double                        last_length = 0;
+    /// See started_from_last_increment().
+    bool                          started_from_last_motion = false;
     double                       sigma_T = 1;
     double                       mu_pi   = 0;
     bool                         contact_active = false;

@@ -32,5 +32,7 @@ namespace FrictionalContact
     unsigned int lanczos_vectors;
     /// Whether an increment first tries the elastic solution.
     bool try_elastic_first;
+    /// Whether a contact solve starts from the last increment's motion.
+    bool start_from_last_increment;
   };
 } // namespace FrictionalContact
