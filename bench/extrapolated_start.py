@@ -22,7 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import run as run_program, solve_seconds  # noqa: E402
+from runs import NO_OUTPUT, run as run_program, solve_seconds  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "start", "d", "increments", "newton_iterations",
            "krylov_iterations", "solve_s", "max_u"]
@@ -35,13 +35,6 @@ SCENES = [("o_ring_2d", "o_ring_2d.prm", 1, ""),
           ("ironing_2d", "ironing_2d.prm", 2, ""),
           ("block_on_block_2d", "block_on_block_2d.prm", 1, "")]
 STARTS = {"no motion": "false", "the last increment's": "true"}
-NO_OUTPUT = """set Output directory = output
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-  end
-end
-"""
 
 
 def run(program, scene, more, start, ranks, folder):

@@ -25,7 +25,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import run as run_program, solve_seconds  # noqa: E402
+from runs import NO_OUTPUT, run as run_program, solve_seconds  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -62,13 +62,6 @@ VARIANTS = {
                   "  set Pairs =\nend\n"
                   "subsection Loading\n  set Number of increments = 1\nend\n",
 }
-NO_OUTPUT = """set Output directory = output
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-  end
-end
-"""
 
 
 def run(program, scene, more, variant, ranks, folder):

@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import run as run_program  # noqa: E402
+from runs import NO_OUTPUT, run as run_program  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "version", "d", "newton_iterations", "wall_s",
            "peak_mb", "largest_force_difference"]
@@ -45,13 +45,6 @@ end
     ("hertz_3d", f"include {ROOT}/parameters/hertz_3d.prm\n", 2),
     ("block_on_block_3d", f"include {ROOT}/parameters/block_on_block_3d.prm\n", 2),
 ]
-NO_OUTPUT = """set Output directory = output
-subsection Postprocess
-  subsection Visualization
-    set Write vtu = false
-  end
-end
-"""
 
 
 def run(program, text, ranks, folder):
