@@ -55,17 +55,6 @@ namespace FrictionalContact
 
   namespace
   {
-    /// Adds the work of another solve of the same increment to @p total.
-    void
-    add_work(SolveStatistics &total, const SolveStatistics &more)
-    {
-      total.iterations += more.iterations;
-      total.linear_iterations += more.linear_iterations;
-      total.amg_setups += more.amg_setups;
-      total.amg_updates += more.amg_updates;
-      total.seconds += more.seconds;
-    }
-
     /// The passes whose differences Anderson's mixing combines.
     constexpr unsigned int anderson_depth = 3;
 
@@ -210,7 +199,7 @@ namespace FrictionalContact
             taken                = reached;
             warm_start.tolerance = 0;
             outcome              = solve_once(&warm_start);
-            add_work(work, outcome.statistics);
+            work.add_work(outcome.statistics);
             continue;
           }
         if (settled || pass == max_passes)
@@ -240,7 +229,7 @@ namespace FrictionalContact
         warm_start.tolerance =
           looseness * std::max(change.normal, relative_gap_change);
         outcome = solve_once(&warm_start);
-        add_work(work, outcome.statistics);
+        work.add_work(outcome.statistics);
       }
     return outcome;
   }

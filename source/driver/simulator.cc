@@ -265,10 +265,7 @@ namespace FrictionalContact
         const SolveStatistics first = outcome.statistics;
         increment_solver.forget_last_increment();
         outcome = solve();
-        outcome.statistics.iterations += first.iterations;
-        outcome.statistics.linear_iterations += first.linear_iterations;
-        outcome.statistics.amg_setups += first.amg_setups;
-        outcome.statistics.seconds += first.seconds;
+        outcome.statistics.add_work(first);
       }
     const SolveStatistics &statistics = outcome.statistics;
     if (!statistics.converged)

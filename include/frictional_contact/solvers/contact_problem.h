@@ -247,5 +247,17 @@ namespace FrictionalContact
     std::string  failure;
     /// One row per iteration, if recording was asked for.
     std::vector<HistoryRow> history;
+
+    /// Adds the work of another solve of the same increment (its
+    /// iterations, set-ups and time).
+    void
+    add_work(const SolveStatistics &more)
+    {
+      iterations += more.iterations;
+      linear_iterations += more.linear_iterations;
+      amg_setups += more.amg_setups;
+      amg_updates += more.amg_updates;
+      seconds += more.seconds;
+    }
   };
 } // namespace FrictionalContact
