@@ -105,6 +105,7 @@ namespace FrictionalContact
                               const unsigned int increment,
                               const double      t_start,
                               const double      t_end,
+                              const double      load_factor_start,
                               const double      load_factor,
                               const bool        record_history,
                               TimerOutput      &timer,
@@ -124,6 +125,12 @@ namespace FrictionalContact
                           t_end);
     TrilinosWrappers::MPI::Vector start = state.u;
     start += lifting;
+    const IncrementDrive<dim> drive =
+      solver.start_from_last_increment ?
+        IncrementDrive<dim>(lifting, load_factor - load_factor_start, contact, t_start, t_end) :
+        IncrementDrive<dim>();
+    const double motion_scale =
+      warm_start ? 0. : last_motion_scale(drive, t_end - t_start);
     if (contact.follows_configuration())
       model.get_contact().follow_configuration(start);
 
@@ -233,7 +240,7 @@ namespace FrictionalContact
                   mortar->frame_turns(contact, step, turns);
                 };
           }
-        solve_contact(model, state, start, t_end - t_start, outcome, record_history,
+        solve_contact(model, state, start, motion_scale, outcome, record_history,
                       timer, warm_start);
         outcome.problem->follow_geometry  = nullptr;
         outcome.problem->pair_frame_turns = nullptr;
@@ -257,6 +264,7 @@ namespace FrictionalContact
       {
         last_motion = outcome.du;
         last_length = t_end - t_start;
+        last_drive  = drive;
       }
     outcome.du += lifting;
     return outcome;
@@ -317,7 +325,7 @@ namespace FrictionalContact
   IncrementSolver<dim>::solve_contact(const Model<dim>      &model,
                                       const State<dim>      &state,
                                       const TrilinosWrappers::MPI::Vector &start,
-                                      const double           length,
+                                      const double           motion_scale,
                                       IncrementOutcome<dim> &outcome,
                                       const bool             record_history,
                                       TimerOutput           &timer,
@@ -375,18 +383,13 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       r[j] = contact.friction_cone(j).project(contact.to_local(j, forces[j]));
     du = 0;
-    const bool extrapolate =
-      !warm_start && last_length > 0 &&
-      !Utilities::MPI::logical_or(last_motion.locally_owned_elements() !=
-                                    du.locally_owned_elements(),
-                                  comm);
-    if (warm_start || extrapolate)
+    if (warm_start || motion_scale > 0)
       {
         TrilinosWrappers::MPI::Vector motion =
           warm_start ? warm_start->du : last_motion;
-        if (extrapolate)
+        if (!warm_start)
           {
-            motion *= length / last_length;
+            motion *= motion_scale;
             started_from_last_motion = true;
           }
         if (mortar)

@@ -249,6 +249,7 @@ namespace FrictionalContact
                                       l + 1,
                                       driver.start_time(l),
                                       t,
+                                      driver.loading().load_factor(driver.start_time(l)),
                                       load_factor,
                                       postprocessors.needs_history(),
                                       *timer,
@@ -258,10 +259,10 @@ namespace FrictionalContact
     IncrementOutcome<dim> outcome = solve();
     if (!outcome.statistics.converged && increment_solver.started_from_last_increment())
       {
-        // Where the motion turns (a die that stops pressing and slides),
-        // the last increment's may lead the start where the method cannot
-        // converge (a cell inverted): the increment again from no motion,
-        // before it is cut, the work of both solves counted.
+        // The last increment's motion may lead the start where the method
+        // cannot converge (a cell inverted, the contact state turned) even
+        // where the prescribed motion goes on: the increment again from no
+        // motion, before it is cut, the work of both solves counted.
         const SolveStatistics first = outcome.statistics;
         increment_solver.forget_last_increment();
         outcome = solve();

@@ -395,14 +395,33 @@ namespace FrictionalContact
 
 
   template <int dim>
+  Tensor<1, dim>
+  RigidTool<dim>::translation_at(const double t) const
+  {
+    Tensor<1, dim> shift;
+    for (unsigned int d = 0; d < dim; ++d)
+      shift[d] = translation->value(t, d);
+    return shift;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidTool<dim>::angle_at(const double t) const
+  {
+    return angle->value(t);
+  }
+
+
+
+  template <int dim>
   std::vector<MortarSegments::FaceVertices<dim>>
   RigidTool<dim>::faces_at(const double t) const
   {
     // The motion at t once, then every vertex: y = c + a(t) + R(t)(X - c).
-    Tensor<1, dim> shift;
-    for (unsigned int d = 0; d < dim; ++d)
-      shift[d] = translation->value(t, d);
-    const double            theta = angle->value(t);
+    const Tensor<1, dim>    shift = translation_at(t);
+    const double            theta = angle_at(t);
     std::vector<Point<dim>> moved;
     moved.reserve(vertices.size());
     for (const Point<dim> &X : vertices)
@@ -426,7 +445,7 @@ namespace FrictionalContact
   RigidTool<dim>::vertex_normals_at(const double t) const
   {
     // Turned by the rotation R(t); a translation does not turn them.
-    const double theta = angle->value(t);
+    const double theta = angle_at(t);
     std::vector<std::array<Tensor<1, dim>, dim == 2 ? 2 : 4>> result;
     result.reserve(faces.size());
     for (const auto &face : faces)

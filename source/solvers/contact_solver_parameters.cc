@@ -35,18 +35,27 @@ namespace FrictionalContact
                       "iteration is that elastic solve, and a body that "
                       "touches nothing converges with every node free.");
     prm.declare_entry("Start from the last increment",
-                      "false",
-                      Patterns::Bool(),
+                      "auto",
+                      Patterns::Selection("auto|true|false"),
                       "Start each increment's contact solve from the last "
                       "increment's displacement increment, scaled by the "
                       "ratio of their lengths in time (a linear "
                       "extrapolation of the motion), instead of from no "
-                      "displacement beyond the prescribed one. The solution "
-                      "is the same; where the motion is smooth across "
-                      "increments it takes fewer iterations "
-                      "(doc/performance.md). Not after a change of the mesh, "
-                      "at the first increment, or at the first increment of "
-                      "a resumed run.");
+                      "displacement beyond the prescribed one, where the "
+                      "increment goes on the way the last one went: the "
+                      "prescribed displacements, the load factor and the "
+                      "obstacle's and tool's motions each point within 25 "
+                      "degrees of the last increment's, at a pace within a "
+                      "factor 2. The solution is the same; where the motion "
+                      "is smooth across increments it takes fewer "
+                      "iterations (doc/performance.md). Not after a change "
+                      "of the mesh, at the first increment, or at the first "
+                      "increment of a resumed run; where such a start does "
+                      "not converge, the increment is solved again from no "
+                      "motion before it is cut. auto: true for the "
+                      "semismooth Newton method; false for Kanno's methods, "
+                      "which take about as many iterations from either start "
+                      "and start from no motion, as the paper does.");
     prm.declare_entry("Lanczos vectors",
                       "20",
                       Patterns::Integer(4),
@@ -69,7 +78,9 @@ namespace FrictionalContact
     eigenvalue_tolerance = prm.get_double("Eigenvalue tolerance");
     lanczos_vectors      = prm.get_integer("Lanczos vectors");
     try_elastic_first    = prm.get_bool("Try the elastic solution first");
-    start_from_last_increment = prm.get_bool("Start from the last increment");
+    const std::string start = prm.get("Start from the last increment");
+    start_from_last_increment =
+      start == "true" || (start == "auto" && method->gains_from_last_increment_start());
     prm.leave_subsection();
   }
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <frictional_contact/driver/increment_drive.h>
 #include <frictional_contact/driver/increment_response.h>
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/model/mortar_basis.h>
@@ -100,6 +101,7 @@ namespace FrictionalContact
     {
       last_motion.clear();
       last_length = 0;
+      last_drive  = IncrementDrive<dim>();
       linear_solver.release();
       mortar_cycle.reset();
       geometric.reset();
@@ -112,7 +114,8 @@ namespace FrictionalContact
 
     /**
      * Solves increment number @p increment (counted from 1, for messages)
-     * from @p t_start to @p t_end from @p state, the
+     * from @p t_start to @p t_end, the load factor going from
+     * @p load_factor_start to @p load_factor, from @p state, the
      * obstacle already moved to its position at @p t_end, the contact
      * solve from @p warm_start if given. Throws a SolverError if the
      * elastic solve fails; a contact solve that does not converge is
@@ -124,6 +127,7 @@ namespace FrictionalContact
           const unsigned int      increment,
           const double            t_start,
           const double            t_end,
+          const double            load_factor_start,
           const double            load_factor,
           const bool              record_history,
           TimerOutput            &timer,
@@ -205,15 +209,27 @@ namespace FrictionalContact
     void
     prepare_mortar_solves(const ElasticBody<dim> &body, const bool rebuild);
 
-    /// Solves the contact problem of @p outcome, an increment of length
-    /// @p length in time, from @p warm_start if given, else from the last
-    /// increment's motion where asked for (last_motion), else from no
+    /// The factor by which the last increment's motion is taken as the
+    /// start of an increment of length @p length driven by @p drive: the
+    /// ratio of their lengths where the drive continues the last one's on
+    /// the same mesh (<Start from the last increment>), else 0. Collective.
+    double
+    last_motion_scale(const IncrementDrive<dim> &drive, const double length) const
+    {
+      return last_length > 0 && drive.continues(last_drive, length, last_length) ?
+               length / last_length :
+               0.;
+    }
+
+    /// Solves the contact problem of @p outcome from @p warm_start if
+    /// given, else from the last increment's motion times @p motion_scale
+    /// where that is positive (last_motion_scale()), else from no
     /// displacement; @p start is u^l with the prescribed increment.
     void
     solve_contact(const Model<dim>                    &model,
                   const State<dim>                    &state,
                   const TrilinosWrappers::MPI::Vector &start,
-                  const double                         length,
+                  const double                         motion_scale,
                   IncrementOutcome<dim>               &outcome,
                   const bool                           record_history,
                   TimerOutput                         &timer,
@@ -309,12 +325,13 @@ namespace FrictionalContact
     double krylov_per_step_after_build = 0;
     bool   rebuild_for_tangent         = false;
     /// The displacement increment of the last increment solved on this
-    /// mesh, without its prescribed part, and its length in time (empty
-    /// unless <Start from the last increment>; a converged solve the driver
-    /// then rejected, such as a pass of the pairs' geometry, counts too:
-    /// it is only where the next solve starts).
+    /// mesh, without its prescribed part, its length in time and what
+    /// drove it (empty unless <Start from the last increment>; a converged
+    /// solve the driver then rejected, such as a pass of the pairs'
+    /// geometry, counts too: it is only where the next solve starts).
     TrilinosWrappers::MPI::Vector last_motion;
     double                        last_length = 0;
+    IncrementDrive<dim>           last_drive;
     /// See started_from_last_increment().
     bool                          started_from_last_motion = false;
     double                       sigma_T = 1;

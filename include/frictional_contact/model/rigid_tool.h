@@ -61,6 +61,12 @@ namespace FrictionalContact
       return newton_geometry;
     }
 
+    /// The translation a(t) and the angle theta(t) of the tool's motion.
+    Tensor<1, dim>
+    translation_at(const double t) const;
+    double
+    angle_at(const double t) const;
+
     /// The tool's faces at time @p t.
     std::vector<MortarSegments::FaceVertices<dim>>
     faces_at(const double t) const;

@@ -100,6 +100,20 @@ namespace FrictionalContact
     }
 
     /**
+     * Whether an increment's solve gains from starting at the last
+     * increment's motion (<Contact solver/Start from the last increment>
+     * = auto): Newton's method, whose fast convergence starts nearer the
+     * solution, says yes; Algorithm 2, which takes about as many
+     * iterations from either start, says no and starts from no motion as
+     * the paper does.
+     */
+    virtual bool
+    gains_from_last_increment_start() const
+    {
+      return false;
+    }
+
+    /**
      * Solves @p problem. @p du and @p r hold the initial iterate on entry
      * and the last iterate on exit (whether or not it converged).
      */

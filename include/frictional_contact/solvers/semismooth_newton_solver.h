@@ -58,6 +58,13 @@ namespace FrictionalContact
       return false;
     }
 
+    /// Yes: a start within the region of fast convergence saves steps.
+    bool
+    gains_from_last_increment_start() const override
+    {
+      return true;
+    }
+
     /// Yes: each step evaluates the internal force and its tangent.
     bool
     handles_nonlinear_laws() const override
