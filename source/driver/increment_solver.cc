@@ -147,7 +147,11 @@ namespace FrictionalContact
             linear_solver.set_geometric_multigrid(nullptr, nullptr);
             mortar_cycle.reset();
           }
-        mortar = std::make_shared<MortarBasis<dim>>(body, contact);
+        // K_w of K as it is is what the first preconditioners on this mesh
+        // are built from and what linear laws solve with; a nonlinear
+        // law's solves take the tangent at the start, made below.
+        mortar = std::make_shared<MortarBasis<dim>>(
+          body, contact, !model.nonlinear() || !preconditioner_basis);
       }
     // p - f_int(u_0): for linear laws p - K u_0; nonlinear ones evaluate
     // f_int(u_0) and the tangent there.

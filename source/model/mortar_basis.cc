@@ -23,7 +23,8 @@ namespace FrictionalContact
 
   template <int dim>
   MortarBasis<dim>::MortarBasis(const ElasticBody<dim>     &body,
-                                const ContactOperator<dim> &contact)
+                                const ContactOperator<dim> &contact,
+                                const bool                  with_stiffness)
   {
     const bool identity = make_basis(body, contact);
     // Rows that change within Newton need a body at finite strain on a
@@ -35,18 +36,20 @@ namespace FrictionalContact
            ExcInternalError());
     const TrilinosWrappers::SparseMatrix &stiffness =
       body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
+    const VolumetricSplit volumetric = body.volumetric_split();
+    has_stiffness = with_stiffness || volumetric.reduced_stiffness != nullptr;
     // Q = I for the whole increment: rows that change within Newton may
     // reach a master's unknowns at the next iterate.
     if (identity && !contact.mortar_rows_change_within_newton())
       {
-        transformed_stiffness.copy_from(stiffness);
+        if (has_stiffness)
+          transformed_stiffness.copy_from(stiffness);
         // The tangents of nonlinear laws are made in that same matrix.
         tangent_itself = std::make_unique<AssembledStiffness>(stiffness);
       }
-    else
+    else if (has_stiffness)
       transform_to_basis(basis.matrix, stiffness, transformed_stiffness);
 
-    const VolumetricSplit volumetric = body.volumetric_split();
     if (volumetric.reduced_stiffness != nullptr)
       {
         transform_to_basis(basis.matrix, *volumetric.reduced_stiffness, transformed_reduced_stiffness);

@@ -37,14 +37,21 @@ namespace FrictionalContact
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    /// Q from the mortar rows of @p contact (after update_pairs()).
-    MortarBasis(const ElasticBody<dim> &body, const ContactOperator<dim> &contact);
+    /// Q from the mortar rows of @p contact (after update_pairs()), and
+    /// K_w of the body's matrix as it is now unless @p with_stiffness is
+    /// false: where no preconditioner is built from it and a nonlinear
+    /// law's update_tangent() comes before any solve (K_w of a volumetric
+    /// split is made either way).
+    MortarBasis(const ElasticBody<dim>     &body,
+                const ContactOperator<dim> &contact,
+                const bool                  with_stiffness = true);
 
     /// K_w = Q^T K Q of the body's stiffness matrix, or of the tangent of
     /// nonlinear laws once update_tangent() made it.
     const StiffnessOperator &
     stiffness() const
     {
+      Assert(has_tangent || has_stiffness, ExcInternalError());
       if (!has_tangent)
         return transformed_operator;
       if (tangent_itself)
@@ -58,6 +65,7 @@ namespace FrictionalContact
     const StiffnessOperator &
     initial_stiffness() const
     {
+      Assert(has_stiffness, ExcInternalError());
       return transformed_operator;
     }
 
@@ -163,6 +171,9 @@ namespace FrictionalContact
     TrilinosWrappers::SparseMatrix transformed_stiffness;
     TrilinosWrappers::SparseMatrix transformed_reduced_stiffness;
     AssembledStiffness             transformed_operator{transformed_stiffness};
+    /// Whether transformed_stiffness holds K_w (the constructor's
+    /// with_stiffness).
+    bool                           has_stiffness = false;
     MortarTangent                  tangent_operator{basis.matrix};
     bool                           has_tangent = false;
     /// Where Q = I (no mortar row reaches a master dof: every master is a
