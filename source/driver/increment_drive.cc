@@ -1,29 +1,39 @@
 #include <frictional_contact/driver/increment_drive.h>
 
 #include <cmath>
+#include <utility>
 
 namespace FrictionalContact
 {
   template <int dim>
   IncrementDrive<dim>::IncrementDrive(const TrilinosWrappers::MPI::Vector &lifting,
-                                      const double               load_factor_change,
+                                      std::vector<std::vector<double>> rigid_parts)
+    : lifting(lifting)
+    , rigid_parts(std::move(rigid_parts))
+  {}
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  IncrementDrive<dim>::rigid_parts_of(const double                load_factor_change,
                                       const ContactOperator<dim> &contact,
                                       const double                t_start,
                                       const double                t_end)
-    : lifting(lifting)
   {
-    rigid_parts.push_back({load_factor_change});
+    std::vector<std::vector<double>> parts{{load_factor_change}};
     const Tensor<1, dim> obstacle =
       contact.obstacle_displacement(t_end) - contact.obstacle_displacement(t_start);
-    rigid_parts.emplace_back(obstacle.begin_raw(), obstacle.end_raw());
+    parts.emplace_back(obstacle.begin_raw(), obstacle.end_raw());
     const RigidTool<dim> &tool = contact.rigid_tool();
     if (tool.active())
       {
         const Tensor<1, dim> translation =
           tool.translation_at(t_end) - tool.translation_at(t_start);
-        rigid_parts.emplace_back(translation.begin_raw(), translation.end_raw());
-        rigid_parts.push_back({tool.angle_at(t_end) - tool.angle_at(t_start)});
+        parts.emplace_back(translation.begin_raw(), translation.end_raw());
+        parts.push_back({tool.angle_at(t_end) - tool.angle_at(t_start)});
       }
+    return parts;
   }
 
 

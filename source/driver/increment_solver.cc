@@ -127,7 +127,9 @@ namespace FrictionalContact
     start += lifting;
     const IncrementDrive<dim> drive =
       solver.start_from_last_increment ?
-        IncrementDrive<dim>(lifting, load_factor - load_factor_start, contact, t_start, t_end) :
+        IncrementDrive<dim>(lifting,
+                            IncrementDrive<dim>::rigid_parts_of(load_factor - load_factor_start,
+                                                                contact, t_start, t_end)) :
         IncrementDrive<dim>();
     const double motion_scale =
       warm_start ? 0. : last_motion_scale(drive, t_end - t_start);

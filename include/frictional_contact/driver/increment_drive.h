@@ -26,14 +26,20 @@ namespace FrictionalContact
     /// No drive: continues() nothing and nothing continues it.
     IncrementDrive() = default;
 
-    /// The drive of the increment from @p t_start to @p t_end whose
-    /// prescribed displacements move by @p lifting and whose load factor
-    /// changes by @p load_factor_change.
+    /// The drive of an increment whose prescribed displacements move by
+    /// @p lifting, with the rest of its parts (rigid_parts_of()).
     IncrementDrive(const TrilinosWrappers::MPI::Vector &lifting,
-                   const double                         load_factor_change,
-                   const ContactOperator<dim>          &contact,
-                   const double                         t_start,
-                   const double                         t_end);
+                   std::vector<std::vector<double>>     rigid_parts);
+
+    /// The parts of the drive besides the lifting, of the increment from
+    /// @p t_start to @p t_end whose load factor changes by
+    /// @p load_factor_change: that change, the obstacle's displacement,
+    /// and, with a tool, its translation and its angle.
+    static std::vector<std::vector<double>>
+    rigid_parts_of(const double                load_factor_change,
+                   const ContactOperator<dim> &contact,
+                   const double                t_start,
+                   const double                t_end);
 
     /**
      * Whether this increment, of length @p length, goes on the way @p last,
