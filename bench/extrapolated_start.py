@@ -26,7 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, solve_seconds  # noqa: E402
+from runs import NO_OUTPUT, run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "start", "d", "increments", "iterations",
            "krylov_iterations", "solve_s", "max_u"]
@@ -88,7 +88,7 @@ def main():
             row = dict(result, scene=name, ranks=ranks, start=start,
                        solve_s=f"{result['solve_s']:.4f}")
             rows.append(row)
-            print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
+            print_row(row, COLUMNS)
     append_rows(args.csv, COLUMNS, rows)
     write_tables()
 

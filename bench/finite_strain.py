@@ -25,7 +25,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, solve_seconds  # noqa: E402
+from runs import NO_OUTPUT, run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -111,7 +111,7 @@ def main():
                        finite_over_small=f"{ratio:.2f}" if variant != "small strain" else "")
             row["solve_s"] = f"{row['solve_s']:.4f}"
             rows.append(row)
-            print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
+            print_row(row, COLUMNS)
     append_rows(args.csv, COLUMNS, rows)
     write_tables()
 

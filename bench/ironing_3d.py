@@ -24,7 +24,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from check_analytic import read_statistics  # noqa: E402
 from doc_tables import replace_rows, write_tables  # noqa: E402
-from runs import run as run_program  # noqa: E402
+from runs import run as run_program, print_row  # noqa: E402
 
 COLUMNS = ["cells_along", "dimension", "tool_geometry", "ranks", "d", "increments",
            "newton_iterations",
@@ -97,7 +97,7 @@ def main():
                             for t in times) / scale
                 row.update(largest_drag_difference=f"{drag:.2e}",
                            largest_press_difference=f"{press:.2e}")
-                print(", ".join(f"{k} {row[k]}" for k in COLUMNS), flush=True)
+                print_row(row, COLUMNS)
                 rows.append(row)
     replace_rows(args.csv, COLUMNS, rows)
     for line in write_tables():

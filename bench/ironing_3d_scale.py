@@ -43,7 +43,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import replace_rows, write_tables  # noqa: E402
-from runs import run as run_program, solve_seconds  # noqa: E402
+from runs import run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["cells", "ranks", "d", "end_time", "tool_geometry", "tangent_rebuild_factor",
            "hard_increment_iterations", "increments", "cuts", "halved_ahead",
@@ -141,7 +141,7 @@ def main():
                        elastic_solve_s=f"{unit:.3f}",
                        solve_in_elastic_solves=f"{result['solve_s'] / unit:.0f}")
             row["solve_s"] = f"{result['solve_s']:.1f}"
-            print(", ".join(f"{k} {row[k]}" for k in COLUMNS), flush=True)
+            print_row(row, COLUMNS)
             rows.append(row)
     kept = []
     if os.path.exists(args.csv):

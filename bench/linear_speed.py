@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program  # noqa: E402
+from runs import NO_OUTPUT, run as run_program, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "version", "d", "newton_iterations", "wall_s",
            "peak_mb", "largest_force_difference"]
@@ -96,7 +96,7 @@ def main():
             row = dict(best[label], scene=name, ranks=ranks, version=label,
                        largest_force_difference=f"{difference:.1e}")
             rows.append(row)
-            print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS), flush=True)
+            print_row(row, COLUMNS)
     append_rows(args.csv, COLUMNS, rows)
     write_tables()
 

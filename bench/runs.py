@@ -1,6 +1,6 @@
 """Runs a program of a bench, on one rank or through mpirun, timed: the one
-place where the benches written with nonlinear laws start a run, and
-read its solve time."""
+place where the benches written with nonlinear laws start a run, read
+its solve time and print a result."""
 import os
 import re
 import subprocess
@@ -44,3 +44,8 @@ def solve_seconds(output):
     sections = dict((name.strip(), float(value)) for name, value in
                     re.findall(r"([A-Za-z ]+) = ([0-9.e+-]+) s", summary))
     return sum(sections.get(k, 0.) for k in ("Assembly", "Elastic solve", "Contact solve"))
+
+
+def print_row(row, columns):
+    """Prints one result of a bench as 'column value' pairs, as it comes."""
+    print(", ".join(f"{k} {row.get(k, '')}" for k in columns), flush=True)

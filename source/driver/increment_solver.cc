@@ -113,8 +113,6 @@ namespace FrictionalContact
   {
     const ElasticBody<dim>     &body    = model.get_body();
     const ContactOperator<dim> &contact = model.get_contact();
-    if (warm_start == nullptr)
-      started_from_last_motion = false;
 
     // The increment of the prescribed displacements, and the configuration
     // it leads to before the rest of the increment is solved for.
@@ -133,6 +131,8 @@ namespace FrictionalContact
         IncrementDrive<dim>();
     const double motion_scale =
       warm_start ? 0. : last_motion_scale(drive, t_end - t_start);
+    if (!warm_start)
+      started_from_last_motion = motion_scale > 0;
     if (contact.follows_configuration())
       model.get_contact().follow_configuration(start);
 
@@ -394,10 +394,7 @@ namespace FrictionalContact
         TrilinosWrappers::MPI::Vector motion =
           warm_start ? warm_start->du : last_motion;
         if (!warm_start)
-          {
-            motion *= motion_scale;
-            started_from_last_motion = true;
-          }
+          motion *= motion_scale;
         if (mortar)
           mortar->displacement_to_w(motion, du);
         else

@@ -241,6 +241,8 @@ namespace FrictionalContact
   {
     const double t           = driver.times()[l];
     const double load_factor = driver.loading().load_factor(t);
+    const double load_factor_start =
+      driver.loading().load_factor(driver.start_time(l));
     const auto solve = [&]() {
       return pair_geometry.solve(model, state.u, driver.start_time(l), t,
                                  [&](const WarmStart<dim> *warm_start) {
@@ -249,7 +251,7 @@ namespace FrictionalContact
                                       l + 1,
                                       driver.start_time(l),
                                       t,
-                                      driver.loading().load_factor(driver.start_time(l)),
+                                      load_factor_start,
                                       load_factor,
                                       postprocessors.needs_history(),
                                       *timer,

@@ -216,9 +216,7 @@ namespace FrictionalContact
     double
     last_motion_scale(const IncrementDrive<dim> &drive, const double length) const
     {
-      return last_length > 0 && drive.continues(last_drive, length, last_length) ?
-               length / last_length :
-               0.;
+      return drive.continues(last_drive, length, last_length) ? length / last_length : 0.;
     }
 
     /// Solves the contact problem of @p outcome from @p warm_start if
