@@ -110,6 +110,23 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  ContactOperator<dim>::add_force_beyond_frames(const std::vector<Tensor<1, dim>> &r,
+                                                const std::vector<Tensor<1, dim>> &turns,
+                                                const double                       scale,
+                                                Vector                            &f) const
+  {
+    for (unsigned int j = 0; j < turns.size(); ++j)
+      if (turns[j].norm_square() > 0)
+        {
+          const Tensor<1, dim> force = free_part(j, turning_force(j, r[j], scale * turns[j]));
+          add_nodal_value(j, force - to_cartesian(j, to_local(j, force)), f);
+        }
+  }
+
+
+
+  template <int dim>
+  void
   ContactOperator<dim>::set_nodal_values(
     const std::vector<Tensor<1, dim>> &values,
     Vector                            &f) const

@@ -234,6 +234,12 @@ namespace FrictionalContact
       return to_local(j, turning_force(j, r_j, turn));
     }
 
+    void
+    add_force_beyond_frames(const std::vector<Tensor<1, dim>> &r,
+                            const std::vector<Tensor<1, dim>> &turns,
+                            const double                       scale,
+                            Vector                            &f) const override;
+
     /// How candidate j's gap changes as it slides along a deformable
     /// master, in its frame (MortarInterface::SlaveNode::gap_slope); zero
     /// for any other candidate.

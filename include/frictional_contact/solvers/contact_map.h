@@ -127,6 +127,23 @@ namespace FrictionalContact
       return {};
     }
 
+    /**
+     * f += the part of the turning frames' force (add_frame_stiffness(),
+     * the reactions @p r held, each frame turned by @p scale times its
+     * turn @p turns[j]) that the frames cannot carry as a change of their
+     * reactions (frame_turn()): none where a frame spans every free
+     * direction, the whole force where it has a normal alone (no
+     * friction). Taking the geometry again at the turned configuration
+     * turns that part of the force with the frame, while the rest of it
+     * stays Cartesian. Nothing for fixed frames.
+     */
+    virtual void
+    add_force_beyond_frames(const std::vector<Tensor<1, dim>> & /*r*/,
+                            const std::vector<Tensor<1, dim>> & /*turns*/,
+                            const double /*scale*/,
+                            Vector & /*f*/) const
+    {}
+
     /// The largest singular value of T (the paper's sigma_T).
     virtual double
     largest_singular_value() const = 0;

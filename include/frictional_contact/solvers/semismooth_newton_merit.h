@@ -23,7 +23,16 @@ namespace FrictionalContact
      * did at t = 1, its part that the straight line misses, N(du) - (1 - t)
      * N(du_0) - t N(du_1): with the reactions interpolated alone, a long
      * Newton step's curvature entered every short step's merit to first
-     * order, and the merit rose along steps that descend. Collective.
+     * order, and the merit rose along steps that descend. Where the frames
+     * turn along the step, the reactions' components in the turned frames
+     * are what the contact conditions judge, and the part of the turning
+     * force that a frame cannot carry (a frame with a normal alone) turns
+     * the force itself, as taking the geometry again at the point will
+     * (ContactMap::add_force_beyond_frames()): left out, the force balance
+     * of a frictionless node sliding over a curved obstacle was judged
+     * without its normal's turn, which the Newton step has, and the merit
+     * along a full step came back to where it started, so that each step
+     * was halved and the iterates converged linearly. Collective.
      */
     template <int dim>
     class MeritAlongStep
@@ -53,8 +62,12 @@ namespace FrictionalContact
         , du_1(du_1)
         , r_0(r_0)
         , r_1(r_1)
+        , balance_0(balance_0)
+        , balance_1(balance_1)
         , scratch(scratch)
         , nonlinear_residual(std::move(nonlinear_residual))
+        , frames_turn(problem.contact.frames_follow_configuration() ||
+                      problem.pair_frame_turns)
       {
         // The nodes in contact's parts of both ends' residuals, for the
         // reactions the straight line misses (nonlinear laws).
@@ -68,7 +81,7 @@ namespace FrictionalContact
           }
         // Frames that follow the configuration turn along the step as the
         // Newton tangent has them turn (to first order).
-        if (problem.contact.frames_follow_configuration() || problem.pair_frame_turns)
+        if (frames_turn)
           {
             scratch = du_1;
             scratch -= du_0;
@@ -93,6 +106,9 @@ namespace FrictionalContact
           return std::numeric_limits<double>::infinity();
         if (inside)
           scratch = *residual;
+        // The reactions before the frames turn, for their force beyond
+        // the frames.
+        std::vector<Tensor<1, dim>> held_reactions(frames_turn ? c.size() : 0);
         double sum = 0;
         for (unsigned int j = 0; j < c.size(); ++j)
           {
@@ -106,6 +122,8 @@ namespace FrictionalContact
                 contact.add_reaction(j, -missed, scratch);
               }
             const NodeAtStep at = node_at(j, t, missed);
+            if (!held_reactions.empty())
+              held_reactions[j] = at.held_r;
             const double phi_n = at.r[0] - std::min(0., at.augmented_normal);
             Tensor<1, dim> z     = at.z;
             if (z.norm() > at.bound)
@@ -116,9 +134,18 @@ namespace FrictionalContact
             // (no free normal component): the mean scale serves it.
             sum += (phi_n * phi_n + phi_t * phi_t) / (c[j] > 0 ? c[j] : mean_c);
           }
+        // The same on every rank (a rank without candidates has no turns).
+        const bool turns = frames_turn && t > 0;
+        if (turns && !inside)
+          {
+            scratch = balance_0;
+            scratch.sadd(1 - t, t, balance_1);
+          }
+        if (turns)
+          problem.contact.add_force_beyond_frames(held_reactions, step_turns, t, scratch);
         const double balance =
-          inside ? scratch.norm_sqr() :
-                   balance_a + 2 * t * balance_b + t * t * balance_c;
+          inside || turns ? scratch.norm_sqr() :
+                            balance_a + 2 * t * balance_b + t * t * balance_c;
         return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
                balance / mean_c;
       }
@@ -128,6 +155,9 @@ namespace FrictionalContact
       /// bound and augmented tangential reaction z at a point of the step.
       struct NodeAtStep
       {
+        /// The reaction in the frame at the start of the step, and in
+        /// the frame turned to the point.
+        Tensor<1, dim> held_r;
         Tensor<1, dim> r;
         double         augmented_normal;
         double         bound;
@@ -142,7 +172,8 @@ namespace FrictionalContact
           (1 - t) * problem.relative_displacement(j, du_0) +
           t * problem.relative_displacement(j, du_1);
         NodeAtStep at;
-        at.r = (1 - t) * r_0[j] + t * r_1[j] + missed;
+        at.held_r = (1 - t) * r_0[j] + t * r_1[j] + missed;
+        at.r      = at.held_r;
         if (!step_turns.empty())
           at.r += problem.contact.frame_turn(j, at.r, t * step_turns[j]);
         at.augmented_normal =
@@ -164,12 +195,16 @@ namespace FrictionalContact
       const Vector                      &du_1;
       const std::vector<Tensor<1, dim>> &r_0;
       const std::vector<Tensor<1, dim>> &r_1;
+      const Vector                      &balance_0;
+      const Vector                      &balance_1;
       Vector                            &scratch;
       /// At each node in contact, its parts of the residuals at t = 0 and 1
       /// (nonlinear laws only).
       std::vector<std::array<Tensor<1, dim>, 2>> balance_at_nodes;
       double                             balance_a, balance_b, balance_c;
       const std::function<const Vector *(double)> nonlinear_residual;
+      /// Whether the frames follow the configuration (on every rank).
+      const bool frames_turn;
       /// The turn of each frame per unit step (empty for fixed frames).
       std::vector<Tensor<1, dim>>         step_turns;
     };
