@@ -115,8 +115,11 @@ namespace FrictionalContact
                                                 const double                       scale,
                                                 Vector                            &f) const
   {
+    // A pair's node is left out: across its geometry its force is held
+    // whole (MortarBasis::follow_reactions()), and added here the turn made
+    // the frictionless 3D ironing against the tool take more Newton steps.
     for (unsigned int j = 0; j < turns.size(); ++j)
-      if (turns[j].norm_square() > 0)
+      if (nodes[j].pair < 0 && turns[j].norm_square() > 0)
         {
           const Tensor<1, dim> force = free_part(j, turning_force(j, r[j], scale * turns[j]));
           add_nodal_value(j, force - to_cartesian(j, to_local(j, force)), f);

@@ -26,8 +26,9 @@ namespace FrictionalContact
      * order, and the merit rose along steps that descend. Where the frames
      * turn along the step, the reactions' components in the turned frames
      * are what the contact conditions judge, and the part of the turning
-     * force that a frame cannot carry (a frame with a normal alone) turns
-     * the force itself, as taking the geometry again at the point will
+     * force that a node's frame cannot carry (facing an obstacle without
+     * friction, its frame is a normal alone) turns the force itself, as
+     * taking the geometry again at the point will
      * (ContactMap::add_force_beyond_frames()): left out, the force balance
      * of a frictionless node sliding over a curved obstacle was judged
      * without its normal's turn, which the Newton step has, and the merit
