@@ -115,14 +115,14 @@ namespace FrictionalContact
                                                 const double                       scale,
                                                 Vector                            &f) const
   {
-    // A pair's node is left out. Between two bodies its whole force is
-    // held across the geometry (MortarBasis::follow_reactions()); against
-    // the rigid tool its frame turns at the next geometry with its mortar
-    // point, not with the node's own motion that the tangent takes, and
-    // with the turn added there the frictionless 3D ironing took 227
-    // Newton steps and a cut instead of 205.
+    // A node of a pair between two bodies is left out: its whole force is
+    // held across the geometry (MortarBasis::follow_reactions()). Against
+    // the rigid tool in its frames, its frame turns with its mortar point
+    // as with an obstacle's closest point (the tool's faces projected
+    // along its vertex normals, MortarInterface::update()).
+    const bool tool_frames = pairs_take_tool_frames();
     for (unsigned int j = 0; j < turns.size(); ++j)
-      if (nodes[j].pair < 0 && turns[j].norm_square() > 0)
+      if ((nodes[j].pair < 0 || tool_frames) && turns[j].norm_square() > 0)
         {
           const Tensor<1, dim> force = free_part(j, turning_force(j, r[j], scale * turns[j]));
           add_nodal_value(j, force - to_cartesian(j, to_local(j, force)), f);

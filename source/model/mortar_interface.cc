@@ -362,16 +362,20 @@ namespace FrictionalContact
               if (facing <= 0)
                 continue; // not facing the slave
               // Projected along the slave's normal, or with the tool's
-              // frames along the tool's, as a distance to it is measured;
-              // then a tool face's part fades from whole at 30 degrees from
-              // facing the slave face to none at 60 (further, its projection
-              // would land far from it; a sudden cut made the geometry jump).
+              // frames along the tool's vertex normals, as a distance to it
+              // is measured (along each tool face's own normal, the images
+              // of two faces overlap or part at their shared edge, and a
+              // slave node there turned its frame twice as fast as its
+              // motion, or not at all); then a tool face's part fades from
+              // whole at 30 degrees from facing the slave face to none at 60
+              // (further, its projection would land far from it; a sudden
+              // cut made the geometry jump).
               const double fade =
                 tool_frames ? std::clamp((facing - 0.5) / (std::sqrt(0.75) - 0.5), 0., 1.) : 1.;
               if (fade == 0)
                 continue;
               MortarSegments::FaceIntegrals<dim> integrals = MortarSegments::face_integrals<dim>(
-                x, tool_frames ? master_normal : normal, y);
+                x, normal, y, tool_frames ? &tool_normals[m] : nullptr);
               Table<2, double> &M = integrals.M;
               if (fade < 1)
                 for (unsigned int a = 0; a < n_face_vertices; ++a)

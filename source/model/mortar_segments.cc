@@ -176,23 +176,26 @@ namespace FrictionalContact
 
 
       FaceIntegrals<2>
-      integrals_2d(const FaceVertices<2> &slave,
-                   const Tensor<1, 2>    &normal,
-                   const FaceVertices<2> &master)
+      integrals_2d(const FaceVertices<2>          &slave,
+                   const Tensor<1, 2>             &normal,
+                   const FaceVertices<2>          &master,
+                   const MasterNormals<2>         *master_normals)
       {
         FaceIntegrals<2> result{Table<2, double>(2, 2), Table<2, Tensor<1, 2>>(2, 2)};
         Table<2, double> &M = result.M;
         const Tensor<1, 2> edge   = slave[1] - slave[0];
         const double       length = edge.norm();
-        // Where the line through y along the normal meets the slave's.
-        const auto slave_parameter = [&](const Point<2> &y) {
-          return cross_2d(y - slave[0], normal) / cross_2d(edge, normal);
+        // Where the line through y along @p direction meets the slave's.
+        const auto slave_parameter = [&](const Point<2> &y, const Tensor<1, 2> &direction) {
+          return cross_2d(y - slave[0], direction) / cross_2d(edge, direction);
         };
-        const double s0 = slave_parameter(master[0]), s1 = slave_parameter(master[1]);
+        const double s0 = slave_parameter(master[0], master_normals ? (*master_normals)[0] : normal);
+        const double s1 = slave_parameter(master[1], master_normals ? (*master_normals)[1] : normal);
         const double low = std::max(0., std::min(s0, s1));
         const double high = std::min(1., std::max(s0, s1));
         const double across = cross_2d(master[1] - master[0], normal);
-        if (high - low <= 1e-12 || std::abs(across) < 1e-14 * length)
+        if (high - low <= 1e-12 || std::abs(across) < 1e-14 * length ||
+            std::abs(s1 - s0) < 1e-14)
           return result;
         const Table<2, double> A = dual_coefficients<2>(slave);
         // d t / d x across the normal: the master's N_1 = t, N_0 = 1 - t.
@@ -203,7 +206,10 @@ namespace FrictionalContact
             const double   s   = low + gauss.point(q)[0] * (high - low);
             const double   JxW = gauss.weight(q) * (high - low) * length;
             const Point<2> x   = slave[0] + s * edge;
-            const double   t   = cross_2d(x - master[0], normal) / across;
+            // The master's parameter: along the normal, or linear between
+            // the vertices' projections along their own normals.
+            const double t = master_normals ? (s - s0) / (s1 - s0) :
+                                              cross_2d(x - master[0], normal) / across;
             const auto     Ns  = shape_values<2>(Point<1>(s));
             const auto     Nm  = shape_values<2>(Point<1>(std::min(1., std::max(0., t))));
             const bool     inside = t > 0 && t < 1;
@@ -225,9 +231,10 @@ namespace FrictionalContact
 
 
       FaceIntegrals<3>
-      integrals_3d(const FaceVertices<3> &slave,
-                   const Tensor<1, 3>    &normal,
-                   const FaceVertices<3> &master)
+      integrals_3d(const FaceVertices<3>  &slave,
+                   const Tensor<1, 3>     &normal,
+                   const FaceVertices<3>  &master_face,
+                   const MasterNormals<3> *master_normals)
       {
         FaceIntegrals<3> result{Table<2, double>(4, 4), Table<2, Tensor<1, 3>>(4, 4)};
         Table<2, double> &M = result.M;
@@ -236,6 +243,16 @@ namespace FrictionalContact
         e1 -= (e1 * normal) * normal;
         e1 /= e1.norm();
         const Tensor<1, 3> e2        = cross_product_3d(normal, e1);
+        // With the master's vertex normals, each vertex moved along its
+        // own normal onto the plane through the slave's centre normal to
+        // @p normal: two faces that share an edge then share its image,
+        // and the images of a faceted surface tile the slave face without
+        // gaps or overlaps (along each face's own normal they would not).
+        FaceVertices<3> master = master_face;
+        if (master_normals != nullptr)
+          for (unsigned int b = 0; b < 4; ++b)
+            master[b] -= ((master[b] - centre) * normal) /
+                         ((*master_normals)[b] * normal) * (*master_normals)[b];
         const auto         in_plane  = [&](const Point<3> &p) {
           return Point2{{(p - centre) * e1, (p - centre) * e2}};
         };
@@ -353,14 +370,15 @@ namespace FrictionalContact
 
     template <int dim>
     FaceIntegrals<dim>
-    face_integrals(const FaceVertices<dim> &slave,
-                   const Tensor<1, dim>    &slave_normal,
-                   const FaceVertices<dim> &master)
+    face_integrals(const FaceVertices<dim>  &slave,
+                   const Tensor<1, dim>     &slave_normal,
+                   const FaceVertices<dim>  &master,
+                   const MasterNormals<dim> *master_normals)
     {
       if constexpr (dim == 2)
-        return integrals_2d(slave, slave_normal, master);
+        return integrals_2d(slave, slave_normal, master, master_normals);
       else
-        return integrals_3d(slave, slave_normal, master);
+        return integrals_3d(slave, slave_normal, master, master_normals);
     }
 
     template <int dim>
@@ -470,11 +488,13 @@ namespace FrictionalContact
     template FaceIntegrals<2>
     face_integrals<2>(const FaceVertices<2> &,
                       const Tensor<1, 2> &,
-                      const FaceVertices<2> &);
+                      const FaceVertices<2> &,
+                      const MasterNormals<2> *);
     template FaceIntegrals<3>
     face_integrals<3>(const FaceVertices<3> &,
                       const Tensor<1, 3> &,
-                      const FaceVertices<3> &);
+                      const FaceVertices<3> &,
+                      const MasterNormals<3> *);
     template Tensor<1, 2>
     unit_normal<2>(const FaceVertices<2> &);
     template Tensor<1, 3>

@@ -45,18 +45,29 @@ namespace FrictionalContact
       Table<2, Tensor<1, dim>> slide;
     };
 
+    /// Unit normals at the vertices of a master face.
+    template <int dim>
+    using MasterNormals =
+      std::array<Tensor<1, dim>, GeometryInfo<dim - 1>::vertices_per_cell>;
+
     /**
      * The integrals over the overlap of @p slave and @p master;
      * @p slave_normal is the slave face's outward unit normal (at its
-     * centre), along which the master is projected. Zero if they do not
-     * overlap or do not face each other. The row sums of M are the weights
-     * D_aa = int phi_a over the covered part.
+     * centre), along which the master is projected. With
+     * @p master_normals, each master vertex is projected along its own
+     * normal instead (the overlap is then found on the plane normal to
+     * @p slave_normal, and the master's coordinates are those of the
+     * projected face): the faces of a faceted master with shared vertex
+     * normals then cover the slave face without gaps or overlaps. Zero if
+     * they do not overlap or do not face each other. The row sums of M
+     * are the weights D_aa = int phi_a over the covered part.
      */
     template <int dim>
     FaceIntegrals<dim>
-    face_integrals(const FaceVertices<dim> &slave,
-                   const Tensor<1, dim>    &slave_normal,
-                   const FaceVertices<dim> &master);
+    face_integrals(const FaceVertices<dim>  &slave,
+                   const Tensor<1, dim>     &slave_normal,
+                   const FaceVertices<dim>  &master,
+                   const MasterNormals<dim> *master_normals = nullptr);
 
     /// The dual basis coefficients A = D_e M_e^-1 of the slave face
     /// (exposed for the tests: biorthogonality on any quad).
