@@ -7,7 +7,8 @@
 // basis is biorthogonal on a trapezoid, and on a distorted master the rows of
 // M add up to D (constants) and reproduce the first moments (linear fields);
 // and the derivatives of M as the slave slides along the master agree with
-// its differences.
+// its differences; a faceted master projected along its vertex normals
+// covers the slave without gaps or overlaps.
 #include <frictional_contact/model/mortar_segments.h>
 
 #include <cmath>
@@ -357,6 +358,73 @@ main()
            normal_error(FaceVertices<3>{{Point<3>(0., 0., 0.), Point<3>(1.1, 0.1, 0.2),
                                          Point<3>(-0.1, 0.9, 0.1), Point<3>(1.2, 1.3, -0.3)}}),
            1e-8);
+  }
+
+  // A faceted convex master (a cylinder of radius 3 in facets of 10
+  // degrees, as a rigid tool's surface) a little off a flat slave: with
+  // the master's vertex normals the facets' images tile the slave face
+  // (the rows of M add up to the full D); along each facet's own normal
+  // they part at the shared vertices, which is why a tool's frames take
+  // the vertex normals.
+  {
+    const double radius = 3, lift = 0.05;
+    const auto   on_circle = [&](const double degrees) {
+      const double angle = degrees * M_PI / 180;
+      return Tensor<1, 2>({std::cos(angle), std::sin(angle)});
+    };
+    const Point<2>    centre(0., radius + lift);
+    const FaceVertices<2> slave_line{{Point<2>(-0.5, 0.), Point<2>(0.5, 0.)}};
+    double            rows_2d[2] = {0, 0}, rows_own_normals[2] = {0, 0};
+    for (double degrees = 250; degrees < 290; degrees += 10)
+      {
+        const MasterNormals<2> normals{{on_circle(degrees), on_circle(degrees + 10)}};
+        const FaceVertices<2>  facet{{centre + radius * normals[0], centre + radius * normals[1]}};
+        const FaceIntegrals<2> along_vertices =
+          face_integrals<2>(slave_line, Tensor<1, 2>({0., 1.}), facet, &normals);
+        const FaceIntegrals<2> along_own =
+          face_integrals<2>(slave_line, unit_normal<2>(facet), facet);
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int b = 0; b < 2; ++b)
+            {
+              rows_2d[a] += along_vertices.M(a, b);
+              rows_own_normals[a] += along_own.M(a, b);
+            }
+      }
+    report("2D, faceted master along its vertex normals: the rows of M add up to D",
+           std::max(std::abs(rows_2d[0] - 0.5), std::abs(rows_2d[1] - 0.5)), 1e-14);
+    const double parted =
+      std::max(std::abs(rows_own_normals[0] - 0.5), std::abs(rows_own_normals[1] - 0.5));
+    std::cout << "2D, the same along each facet's own normal: the images part: "
+              << (parted > 1e-5 ? "yes" : "no") << std::endl;
+
+    // The same in 3D: facets along y from -1 to 1, the slave the unit square.
+    const Point<3>    axis_point(0., 0., radius + lift);
+    FaceVertices<3>   square;
+    for (unsigned int v = 0; v < 4; ++v)
+      square[v] = Point<3>(v % 2 == 0 ? -0.5 : 0.5, v < 2 ? -0.5 : 0.5, 0.);
+    std::array<double, 4> rows_3d{};
+    for (double degrees = 250; degrees < 290; degrees += 10)
+      {
+        MasterNormals<3> normals;
+        FaceVertices<3>  facet;
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            const Tensor<1, 2> radial = on_circle(degrees + (v % 2) * 10);
+            normals[v] = Tensor<1, 3>({radial[0], 0., radial[1]});
+            facet[v]   = axis_point + radius * normals[v] +
+                       Tensor<1, 3>({0., v < 2 ? -1. : 1., 0.});
+          }
+        const FaceIntegrals<3> integrals =
+          face_integrals<3>(square, Tensor<1, 3>({0., 0., 1.}), facet, &normals);
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int b = 0; b < 4; ++b)
+            rows_3d[a] += integrals.M(a, b);
+      }
+    double error_3d = 0;
+    for (const double row : rows_3d)
+      error_3d = std::max(error_3d, std::abs(row - 0.25));
+    report("3D, faceted master along its vertex normals: the rows of M add up to D",
+           error_3d, 1e-14);
   }
   return 0;
 }
