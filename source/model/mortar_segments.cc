@@ -185,12 +185,13 @@ namespace FrictionalContact
         Table<2, double> &M = result.M;
         const Tensor<1, 2> edge   = slave[1] - slave[0];
         const double       length = edge.norm();
-        // Where the line through y along @p direction meets the slave's.
-        const auto slave_parameter = [&](const Point<2> &y, const Tensor<1, 2> &direction) {
-          return cross_2d(y - slave[0], direction) / cross_2d(edge, direction);
+        // Where the line through master vertex b along the normal (or
+        // its own normal) meets the slave's.
+        const auto slave_parameter = [&](const unsigned int b) {
+          const Tensor<1, 2> &direction = master_normals ? (*master_normals)[b] : normal;
+          return cross_2d(master[b] - slave[0], direction) / cross_2d(edge, direction);
         };
-        const double s0 = slave_parameter(master[0], master_normals ? (*master_normals)[0] : normal);
-        const double s1 = slave_parameter(master[1], master_normals ? (*master_normals)[1] : normal);
+        const double s0 = slave_parameter(0), s1 = slave_parameter(1);
         const double low = std::max(0., std::min(s0, s1));
         const double high = std::min(1., std::max(s0, s1));
         const double across = cross_2d(master[1] - master[0], normal);

@@ -133,7 +133,8 @@ namespace FrictionalContact
      * turn @p turns[j]) that the frames cannot carry as a change of their
      * reactions (frame_turn()): none where a frame spans every free
      * direction, the whole force where it has a normal alone (no
-     * friction), at the nodes that face an obstacle. Taking the geometry
+     * friction), at the nodes that face an obstacle or the rigid tool in
+     * its frames. Taking the geometry
      * again at the turned configuration turns that part of the force with
      * the frame, while the rest of it stays Cartesian. Nothing for fixed
      * frames.
