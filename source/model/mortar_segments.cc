@@ -185,8 +185,9 @@ namespace FrictionalContact
         Table<2, double> &M = result.M;
         const Tensor<1, 2> edge   = slave[1] - slave[0];
         const double       length = edge.norm();
-        // Where the line through master vertex b along the normal (or
-        // its own normal) meets the slave's.
+        // Where the line through master vertex b meets the slave's: along
+        // b's vertex normal where the master has them, else along the
+        // slave's normal.
         const auto slave_parameter = [&](const unsigned int b) {
           const Tensor<1, 2> &direction = master_normals ? (*master_normals)[b] : normal;
           return cross_2d(master[b] - slave[0], direction) / cross_2d(edge, direction);
