@@ -77,13 +77,22 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  IncrementResponse<dim>::evaluate(const Vector &du, const bool with_tangent)
+  IncrementResponse<dim>::move_to(const Vector &du)
   {
     u = du;
     // The held dofs stay (their increment is in u_0), hanging ones follow.
     model.get_body().get_constraints().distribute(u);
     u += start;
     u_ghosted = u;
+  }
+
+
+
+  template <int dim>
+  void
+  IncrementResponse<dim>::evaluate(const Vector &du, const bool with_tangent)
+  {
+    move_to(du);
     if (with_tangent)
       {
         plastic = model.update_tangent(u_ghosted, force);
@@ -124,6 +133,22 @@ namespace FrictionalContact
       }
     else
       dst = force;
+  }
+
+  template <int dim>
+  std::string
+  IncrementResponse<dim>::worst_place(const Vector &du)
+  {
+    if (mortar != nullptr)
+      mortar->displacement_to_u(du, du_in_u);
+    else
+      du_in_u = du;
+    move_to(du_in_u);
+    const PlacedMinimum<dim> smallest = model.get_response().smallest_jacobian(u_ghosted);
+    if (!smallest.met())
+      return {};
+    return "the smallest det F, " + Input::to_text(smallest.value) +
+           ", is in the cell at " + smallest.place();
   }
 
   template class IncrementResponse<2>;

@@ -408,6 +408,8 @@ namespace FrictionalContact
       TimerOutput::Scope scope(timer, "Contact solve");
       result = solver.method->solve(problem, linear_solver, du, r, record_history);
     }
+    if (!result.converged)
+      result.worst_places = worst_places(problem, du);
     result.linear_iterations += elastic.linear_iterations;
     result.amg_setups += elastic.amg_setups;
     result.seconds += elastic.seconds;

@@ -285,6 +285,7 @@ namespace FrictionalContact
           Input::scientific(res.force_balance) + ", complementarity " +
           Input::scientific(res.complementarity) + ", penetration " +
           Input::scientific(res.penetration) +
+          (statistics.worst_places.empty() ? "" : "; " + statistics.worst_places) +
           ". The increments before it are written; this one is not");
       }
     return outcome;

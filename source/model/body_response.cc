@@ -88,7 +88,7 @@ namespace FrictionalContact
                         0.5 * symmetrize(transpose(gradient) * gradient);
             const double jacobian = scratch.jacobian[q] =
               determinant(scratch.deformation_gradient[q]);
-            scratch.note_jacobian(jacobian, cell->center());
+            scratch.smallest_jacobian.keep(jacobian, cell->center());
           }
         else
           {
@@ -109,8 +109,8 @@ namespace FrictionalContact
             for (unsigned int c = 0; c < dim; ++c)
               displacement[a][c] = scratch.u(scratch.dof[a][c]);
           }
-        scratch.note_jacobian(smallest_corner_jacobian<dim>(vertices, displacement),
-                              cell->center());
+        scratch.smallest_jacobian.keep(smallest_corner_jacobian<dim>(vertices, displacement),
+                                     cell->center());
       }
     for (double &d : scratch.mean_divergence)
       d /= volume;
@@ -301,6 +301,21 @@ namespace FrictionalContact
             evaluate_cell(cell, u_ghosted, false, scratch, updated.data());
             std::copy(updated.begin(), updated.end(), values);
           }
+  }
+
+
+
+  template <int dim>
+  PlacedMinimum<dim>
+  BodyResponse<dim>::smallest_jacobian(const Vector &u_ghosted) const
+  {
+    const DoFHandler<dim> &dof_handler = body.get_dof_handler();
+    CellScratch            scratch(dof_handler.get_fe());
+    if (finite_strain())
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
+    return scratch.smallest_jacobian.over_ranks(body.get_mpi_communicator());
   }
 
 

@@ -266,27 +266,14 @@ namespace FrictionalContact
   void
   BodyResponse<dim>::refuse_inverted_cells(const CellScratch &scratch) const
   {
-    const MPI_Comm comm     = body.get_mpi_communicator();
-    const double   smallest = Utilities::MPI::min(scratch.smallest_jacobian, comm);
-    if (smallest > 0)
+    const PlacedMinimum<dim> smallest =
+      scratch.smallest_jacobian.over_ranks(body.get_mpi_communicator());
+    if (smallest.value > 0)
       return;
-    // The rank with the smallest det F says where (the lowest such rank).
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int owner =
-      Utilities::MPI::min(scratch.smallest_jacobian == smallest ?
-                            rank :
-                            Utilities::MPI::n_mpi_processes(comm),
-                          comm);
-    std::vector<double> where(scratch.smallest_jacobian_at.begin_raw(),
-                              scratch.smallest_jacobian_at.end_raw());
-    where = Utilities::MPI::broadcast(comm, where, owner);
-    std::string at;
-    for (const double x : where)
-      at += (at.empty() ? "(" : ", ") + Input::to_text(x);
-    throw InvertedCell("the cell at " + at + ") is inverted (det F = " +
-                      Input::to_text(smallest) +
-                      " <= 0): take smaller increments, or let them be cut "
-                      "(<Loading/On failure> = cut increment)");
+    throw InvertedCell("the cell at " + smallest.place() +
+                       " is inverted (det F = " + Input::to_text(smallest.value) +
+                       " <= 0): take smaller increments, or let them be cut "
+                       "(<Loading/On failure> = cut increment)");
   }
 
   // Each member apart: body_response.cc instantiates the class, and a unity

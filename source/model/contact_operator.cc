@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <frictional_contact/model/contact_operator.h>
+#include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/base/plugins.h>
 
 #include <algorithm>
@@ -337,24 +338,18 @@ namespace FrictionalContact
         update_pairs(body, zero, 0., 0.);
       }
     // Neither the obstacle nor another body may start inside a body.
-    double  smallest_gap[2] = {0, 0};
-    Point<dim> deepest[2];
+    PlacedMinimum<dim> deepest[2];
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
         const unsigned int kind = nodes[j].pair < 0 ? 0 : 1;
-        const double gap = kind == 0 ? reference_gap(j) : pair_gaps[j];
-        if (gap < smallest_gap[kind])
-          {
-            smallest_gap[kind] = gap;
-            deepest[kind]      = nodes[j].position;
-          }
+        deepest[kind].keep(kind == 0 ? reference_gap(j) : pair_gaps[j], nodes[j].position);
       }
     double extent = 0;
     for (const Node &node : nodes)
       for (unsigned int d = 0; d < dim; ++d)
         extent = std::max(extent, std::abs(node.position[d]));
     extent = Utilities::MPI::max(extent, mpi_communicator);
-    const double overlap = -Utilities::MPI::min(smallest_gap[0], mpi_communicator);
+    const double overlap = -Utilities::MPI::min(deepest[0].value, mpi_communicator);
     if (overlap > 1e-12 * extent)
       throw InputError("<Contact/Obstacle>: the obstacle starts inside the "
                          "body, " + Input::to_text(overlap) +
@@ -366,23 +361,15 @@ namespace FrictionalContact
     double face_size = 0;
     for (const MortarInterface<dim> &interface : interfaces)
       face_size = std::max(face_size, interface.search_distance() / 2);
-    const auto where =
-      Utilities::MPI::min_max_avg(smallest_gap[1], mpi_communicator);
-    if (-where.min > 1e-2 * face_size)
-      {
-        const Point<dim> point = Utilities::MPI::broadcast(
-          mpi_communicator, deepest[1], where.min_index);
-        std::string at;
-        for (unsigned int d = 0; d < dim; ++d)
-          at += (d == 0 ? "" : ", ") + Input::to_text(point[d]);
-        throw InputError("<Contact/Pairs>: the bodies overlap at the start: "
-                         "the slave vertex at (" + at + ") is " +
-                         Input::to_text(-where.min) +
-                         " inside the other body or tool; move them apart "
-                         "(for stacked blocks, <Geometry/Stacked blocks/Block "
-                         "offset>; for a tool, <Contact/Rigid tool/Translation> "
-                         "at t = 0)");
-      }
+    const PlacedMinimum<dim> overlapping = deepest[1].over_ranks(mpi_communicator);
+    if (-overlapping.value > 1e-2 * face_size)
+      throw InputError("<Contact/Pairs>: the bodies overlap at the start: "
+                       "the slave vertex at " + overlapping.place() + " is " +
+                       Input::to_text(-overlapping.value) +
+                       " inside the other body or tool; move them apart "
+                       "(for stacked blocks, <Geometry/Stacked blocks/Block "
+                       "offset>; for a tool, <Contact/Rigid tool/Translation> "
+                       "at t = 0)");
   }
 
 

@@ -401,9 +401,10 @@ namespace FrictionalContact
     for (unsigned int j = 0; j < contact.n_local(); ++j)
       {
         std::ostringstream row;
-        row << std::setprecision(17) << contact.position(j)[0];
+        const Point<dim> x = *contact.reference_position(j);
+        row << std::setprecision(17) << x[0];
         for (unsigned int d = 1; d < dim; ++d)
-          number(row, contact.position(j)[d]);
+          number(row, x[d]);
         const Tensor<1, dim> u_j = contact.nodal_value(j, u);
         for (unsigned int d = 0; d < dim; ++d)
           number(row, u_j[d]);

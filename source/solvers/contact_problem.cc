@@ -1,3 +1,4 @@
+#include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/solvers/contact_problem.h>
 
 namespace FrictionalContact
@@ -37,6 +38,27 @@ namespace FrictionalContact
     return residuals;
   }
 
+  template <int dim>
+  std::string
+  worst_places(const IncrementalProblem<dim> &problem, const TrilinosWrappers::MPI::Vector &du)
+  {
+    const ContactMap<dim> &contact = problem.contact;
+    PlacedMinimum<dim>     deepest;
+    for (unsigned int j = 0; j < contact.n_local(); ++j)
+      deepest.keep(problem.gap_at(j, problem.relative_displacement(j, du)),
+                   contact.reference_position(j).value_or(Point<dim>()));
+    deepest = deepest.over_ranks(du.get_mpi_communicator());
+    std::string places;
+    if (deepest.value < 0)
+      places = "the deepest penetration, " + Input::scientific(-deepest.value) +
+               ", is at the node at " + deepest.place();
+    const std::string law =
+      problem.nonlinear != nullptr ? problem.nonlinear->worst_place(du) : "";
+    if (!law.empty())
+      places += (places.empty() ? "" : "; ") + law;
+    return places;
+  }
+
   template Residuals
   compute_residuals<2>(const IncrementalProblem<2> &,
                        const TrilinosWrappers::MPI::Vector &,
@@ -51,4 +73,8 @@ namespace FrictionalContact
                        const TrilinosWrappers::MPI::Vector &,
                        const std::vector<Tensor<1, 3>> &,
                        TrilinosWrappers::MPI::Vector &);
+  template std::string
+  worst_places<2>(const IncrementalProblem<2> &, const TrilinosWrappers::MPI::Vector &);
+  template std::string
+  worst_places<3>(const IncrementalProblem<3> &, const TrilinosWrappers::MPI::Vector &);
 } // namespace FrictionalContact

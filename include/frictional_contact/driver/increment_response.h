@@ -64,6 +64,10 @@ namespace FrictionalContact
       return scale;
     }
 
+    /// The smallest det F at u_0 + @p du and its cell (finite strain).
+    std::string
+    worst_place(const Vector &du) override;
+
   private:
     /// The vectors of the model's body, nothing evaluated; N linear until
     /// the first tangent evaluation if @p linear.
@@ -71,6 +75,10 @@ namespace FrictionalContact
                       MortarBasis<dim> *mortar,
                       const Vector     &start,
                       const bool        linear);
+
+    /// u (and u_ghosted) = u_0 + @p du_in_u.
+    void
+    move_to(const Vector &du_in_u);
 
     /// f_int(u) into force for u = u_0 + @p du_in_u (the tangent too if
     /// asked).

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/model/cell_matrix_positions.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/material.h>
@@ -107,6 +108,12 @@ namespace FrictionalContact
       return element_force_size;
     }
 
+    /// The smallest det F at @p u_ghosted on all ranks, at the points and
+    /// the corners of the finite-strain cells, and the centre of its cell
+    /// (nothing met without a finite-strain body). Collective.
+    PlacedMinimum<dim>
+    smallest_jacobian(const Vector &u_ghosted) const;
+
     /// The matrix is no longer the last tangent (K assembled anew, a new
     /// mesh): the next update_tangent() assembles every cell.
     void
@@ -157,23 +164,11 @@ namespace FrictionalContact
         MaterialModel<dim>::VolumeRatio::none;
       /// F = I + Grad u and det F at the points of a finite-strain cell;
       /// the smallest det F met at the points and the vertices
-      /// (smallest_corner_jacobian()) since the scratch was made, and
-      /// where.
+      /// (smallest_corner_jacobian()) since the scratch was made, and the
+      /// centre of its cell.
       std::vector<Tensor<2, dim>>              deformation_gradient;
       std::vector<double>                      jacobian;
-      double                                   smallest_jacobian = 1;
-      Point<dim>                               smallest_jacobian_at;
-      /// Keeps @p jacobian, met in the cell centred at @p at, if it is
-      /// the smallest so far.
-      void
-      note_jacobian(const double jacobian, const Point<dim> &at)
-      {
-        if (jacobian < smallest_jacobian)
-          {
-            smallest_jacobian    = jacobian;
-            smallest_jacobian_at = at;
-          }
-      }
+      PlacedMinimum<dim>                       smallest_jacobian;
       FullMatrix<double>                       matrix;
       dealii::Vector<double>                   force;
     };
@@ -198,7 +193,7 @@ namespace FrictionalContact
     void
     finite_strain_force_and_tangent(const bool with_tangent, CellScratch &scratch) const;
 
-    /// Throws a SolverError on every rank if some rank's @p scratch met
+    /// Throws an InvertedCell on every rank if some rank's @p scratch met
     /// det F <= 0. Collective.
     void
     refuse_inverted_cells(const CellScratch &scratch) const;

@@ -427,9 +427,8 @@ namespace FrictionalContact
       return obstacle->signed_distance(point);
     }
 
-    /// Reference position of candidate j.
-    const Point<dim> &
-    position(const unsigned int j) const
+    std::optional<Point<dim>>
+    reference_position(const unsigned int j) const override
     {
       return nodes[j].position;
     }

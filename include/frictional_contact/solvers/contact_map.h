@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -10,6 +11,7 @@
 #include <frictional_contact/solvers/nodal_block.h>
 
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace FrictionalContact
@@ -48,6 +50,15 @@ namespace FrictionalContact
     /// T_j^T u: normal part (component 0) and tangential parts of @p u at j.
     virtual Tensor<1, dim>
     local_part(const unsigned int j, const Vector &u) const = 0;
+
+    /// Where candidate j is in the reference configuration, to name it in
+    /// a message; nothing for candidates without a place (the contacts of
+    /// an FCLIB problem).
+    virtual std::optional<Point<dim>>
+    reference_position(const unsigned int /*j*/) const
+    {
+      return std::nullopt;
+    }
 
     /// f = T r for the reactions @p r of the local candidates.
     virtual void

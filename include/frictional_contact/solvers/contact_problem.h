@@ -205,6 +205,17 @@ namespace FrictionalContact
                     const std::vector<Tensor<1, dim>>   &r,
                     TrilinosWrappers::MPI::Vector       &scratch);
 
+  /**
+   * Where the iterate du is worst, for the line of a solve that failed:
+   * the deepest penetration and the node it is at (in the reference
+   * configuration), and for nonlinear laws what they name (the smallest
+   * det F and its cell); empty where nothing penetrates and the laws name
+   * nothing. Collective.
+   */
+  template <int dim>
+  std::string
+  worst_places(const IncrementalProblem<dim> &problem, const TrilinosWrappers::MPI::Vector &du);
+
   /// One row of a convergence history: one iteration of the contact solver.
   struct HistoryRow
   {
@@ -243,8 +254,10 @@ namespace FrictionalContact
     /// the method's.
     bool         loosened       = false;
     Residuals    residuals;
-    /// Why the solve stopped, if it did not converge.
+    /// Why the solve stopped, if it did not converge, and where its last
+    /// iterate is worst (worst_places()).
     std::string  failure;
+    std::string  worst_places;
     /// One row per iteration, if recording was asked for.
     std::vector<HistoryRow> history;
 

@@ -3,6 +3,8 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <string>
+
 namespace FrictionalContact
 {
   using namespace dealii;
@@ -38,5 +40,14 @@ namespace FrictionalContact
     /// evaluation, on all ranks.
     virtual types::global_dof_index
     plastic_points() const = 0;
+
+    /// Where the laws come nearest to failing at @p du, for the line of a
+    /// solve that failed ("the smallest det F, ..., is in the cell at
+    /// ..."); empty if they name no place (small strain). Collective.
+    virtual std::string
+    worst_place(const Vector & /*du*/)
+    {
+      return {};
+    }
   };
 } // namespace FrictionalContact
