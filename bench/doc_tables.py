@@ -553,7 +553,24 @@ def step42_goals(root):
             f"; a Newton step costs {min(steps):.2f} to {max(steps):.2f} elastic solves" + memory)
 
 
+def ironing_fold(root):
+    """The smallest det F of the 2D ironing's converged states on two
+    meshes, and where the fine one stops (doc/performance.md)."""
+    table = rows(root, "ironing-fold.csv")
+    coarse = [r for r in table if r["cell_size"] == "0.125"]
+    fine = [r for r in table if r["cell_size"] == "0.0625"]
+    at_1_7 = next(r for r in fine if float(r["time"]) == 1.7)
+    last = fine[-1]
+    return (f"on the shipped cells of 0.125 it is "
+            f"{float(coarse[-1]['smallest_det_F']):.2f} at t = {float(coarse[-1]['time']):g}; "
+            f"on cells of 0.0625 it falls from {float(at_1_7['smallest_det_F']):.2f} at "
+            f"t = 1.7 to {float(last['smallest_det_F']):.0e} at "
+            f"t = {float(last['time']):.6g}, where the run stops with the cell at "
+            f"{last['failed_cell']} inverted")
+
+
 QUOTES = {
+    "ironing-fold": ironing_fold,
     "step42-goals": step42_goals,
     "nearly-incompressible-errors": nearly_incompressible_errors,
     "multigrid-1.6m": multigrid_largest_ml,
