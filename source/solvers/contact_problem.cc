@@ -49,7 +49,8 @@ namespace FrictionalContact
                    contact.reference_position(j).value_or(Point<dim>()));
     deepest = deepest.over_ranks(du.get_mpi_communicator());
     std::string places;
-    if (deepest.value < 0)
+    // Penetrations at round-off of the length scale name no place.
+    if (-deepest.value > 1e-12 * problem.length_scale)
       places = "the deepest penetration, " + Input::scientific(-deepest.value) +
                ", is at the node at " + deepest.place();
     const std::string law =

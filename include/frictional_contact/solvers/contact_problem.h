@@ -209,8 +209,9 @@ namespace FrictionalContact
    * Where the iterate du is worst, for the line of a solve that failed:
    * the deepest penetration and the node it is at (in the reference
    * configuration), and for nonlinear laws what they name (the smallest
-   * det F and its cell); empty where nothing penetrates and the laws name
-   * nothing. Collective.
+   * det F and its cell); empty where nothing penetrates by more than
+   * round-off (1e-12 of the length scale) and the laws name nothing.
+   * Collective.
    */
   template <int dim>
   std::string
