@@ -169,6 +169,7 @@ namespace FrictionalContact
                                                 problem.contact_held.stabilization,
                                                 comm);
     MeritWatch                progress;
+    unsigned int              steps_blocked = 0;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
@@ -265,7 +266,13 @@ namespace FrictionalContact
         forcing.record(std::sqrt(step.merit_before),
                        std::sqrt(step.merit_after),
                        step.t == 1);
-        if (progress.stalled(k, step.merit_after))
+        // Steps blocked where they would invert a cell, in a row and
+        // without progress, do not get past it (a cell that folds in
+        // every state ahead): stop after a few rather than a whole window.
+        steps_blocked = work.inverted_cell.empty() ? 0 : steps_blocked + 1;
+        const bool stalled = progress.stalled(k, step.merit_after);
+        if (stalled || (steps_blocked >= steps_before_fall_back &&
+                        k >= progress.last_progress_step() + steps_before_fall_back))
           {
             result.failure =
               stall_failure(progress.last_progress_step(), k, work.inverted_cell);

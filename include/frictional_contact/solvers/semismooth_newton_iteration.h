@@ -514,7 +514,9 @@ namespace FrictionalContact
     }
 
     /// Newton steps without progress after which the forcing term falls
-    /// back to the fixed rule (ForcingTerm::fall_back()).
+    /// back to the fixed rule (ForcingTerm::fall_back()), and after which
+    /// steps that were all shortened where they would invert a cell stop
+    /// the solve.
     constexpr unsigned int steps_before_fall_back = 5;
 
     /// Why the linear solve of Newton iteration @p k failed, and the fix.
