@@ -349,12 +349,13 @@ namespace FrictionalContact
       for (unsigned int d = 0; d < dim; ++d)
         extent = std::max(extent, std::abs(node.position[d]));
     extent = Utilities::MPI::max(extent, mpi_communicator);
-    const double overlap = -Utilities::MPI::min(deepest[0].value, mpi_communicator);
-    if (overlap > 1e-12 * extent)
+    const PlacedMinimum<dim> inside = deepest[0].over_ranks(mpi_communicator);
+    if (-inside.value > 1e-12 * extent)
       throw InputError("<Contact/Obstacle>: the obstacle starts inside the "
-                         "body, " + Input::to_text(overlap) +
-                         " deep (a negative gap); move it so that every gap "
-                         "is >= 0 at t = 0, for a plane its Point");
+                       "body, " + Input::to_text(-inside.value) +
+                       " deep (a negative gap) at the node at " + inside.place() +
+                       "; move it so that every gap is >= 0 at t = 0, for a "
+                       "plane its Point");
     // A curved master's faces are chords, and the dual basis has negative
     // parts: touching bodies can show weighted gaps of a small negative
     // fraction of the face size. Only a deeper overlap is one.
