@@ -192,24 +192,9 @@ namespace FrictionalContact
         for (Column &column : postprocessor->execute(result))
           columns.push_back(std::move(column));
 
-      for (const Column &column : columns)
-        if (const auto *count = std::get_if<std::uint64_t>(&column.value))
-          table.add_value(column.label, *count);
-        else
-          {
-            // Ten digits: the times of cut increments (0.1611328125)
-            // differ in the fifth.
-            table.add_value(column.label, std::get<double>(column.value));
-            table.set_scientific(column.label, column.scientific);
-            table.set_precision(column.label, 10);
-          }
+      statistics.add_row(columns);
       if (write_statistics)
-        run_on_root(comm, [&]() {
-          std::ostringstream out;
-          table.write_text(out,
-                           TableHandler::table_with_separate_column_description);
-          write_file_atomically(statistics_file, out.str());
-        });
+        run_on_root(comm, [&]() { write_file_atomically(statistics_file, statistics.text()); });
     }
 
 
@@ -233,7 +218,8 @@ namespace FrictionalContact
         states.push_back(postprocessor->save_state());
       std::ostringstream            text;
       boost::archive::text_oarchive archive(text);
-      archive << table << states;
+      statistics.save(archive);
+      archive << states;
       return text.str();
     }
 
@@ -246,7 +232,8 @@ namespace FrictionalContact
       std::istringstream            text(state);
       boost::archive::text_iarchive archive(text);
       std::vector<std::string>      states;
-      archive >> table >> states;
+      statistics.load(archive);
+      archive >> states;
       if (states.size() != postprocessors.size())
         throw InputError("<Resume computation>: the checkpoint was written "
                          "with another <Postprocess/List of postprocessors>");

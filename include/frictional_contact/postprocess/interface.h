@@ -5,6 +5,7 @@
 #include <frictional_contact/driver/increment_solver.h>
 #include <frictional_contact/model/model.h>
 #include <frictional_contact/postprocess/contact_summary.h>
+#include <frictional_contact/postprocess/statistics_table.h>
 
 #include <cstdint>
 #include <string>
@@ -15,17 +16,6 @@ namespace FrictionalContact
 {
   namespace Postprocess
   {
-    /// One column of the statistics file: a label and a value.
-    struct Column
-    {
-      std::string                          label;
-      std::variant<std::uint64_t, double> value;
-      /// Whether a double is printed in scientific notation.
-      bool scientific = false;
-    };
-
-    using Columns = std::vector<Column>;
-
     /// What an increment leaves for the postprocessors.
     template <int dim>
     struct IncrementResult

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/table_handler.h>
 
 #include <frictional_contact/postprocess/interface.h>
 
@@ -18,7 +17,8 @@ namespace FrictionalContact
      * statistics file: one row per increment, made of the increment's own
      * columns and those the postprocessors return, rewritten (atomically,
      * by rank 0) after every increment so that an interrupted run keeps all
-     * finished rows. Owns the subsection "Output": its own entries, the
+     * finished rows (a resumed run keeps those of its checkpoint). Owns
+     * the subsection "Output": its own entries, the
      * checkpoint cadence, and those of every postprocessor.
      */
     template <int dim>
@@ -78,7 +78,7 @@ namespace FrictionalContact
       std::string                                  statistics_file;
       unsigned int                                 checkpoint_every;
       MPI_Comm                                     comm;
-      TableHandler                                 table;
+      StatisticsTable                              statistics;
     };
   } // namespace Postprocess
 } // namespace FrictionalContact
