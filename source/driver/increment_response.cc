@@ -77,6 +77,18 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  IncrementResponse<dim>::take_in_u(const Vector &du)
+  {
+    if (mortar != nullptr)
+      mortar->displacement_to_u(du, du_in_u);
+    else
+      du_in_u = du;
+  }
+
+
+
+  template <int dim>
+  void
   IncrementResponse<dim>::move_to(const Vector &du)
   {
     u = du;
@@ -113,10 +125,7 @@ namespace FrictionalContact
                                                 Vector       &dst,
                                                 const bool    with_tangent)
   {
-    if (mortar != nullptr)
-      mortar->displacement_to_u(du, du_in_u);
-    else
-      du_in_u = du;
+    take_in_u(du);
     if (linear && !with_tangent)
       // The linearised start: K_T(u^l) du.
       model.get_body().stiffness().vmult(force, du_in_u);
@@ -139,10 +148,7 @@ namespace FrictionalContact
   std::string
   IncrementResponse<dim>::worst_place(const Vector &du)
   {
-    if (mortar != nullptr)
-      mortar->displacement_to_u(du, du_in_u);
-    else
-      du_in_u = du;
+    take_in_u(du);
     move_to(du_in_u);
     const PlacedMinimum<dim> smallest = model.get_response().smallest_jacobian(u_ghosted);
     if (!smallest.met())

@@ -76,6 +76,10 @@ namespace FrictionalContact
                       const Vector     &start,
                       const bool        linear);
 
+    /// du_in_u = @p du (in the pairs' basis w, if any) in u.
+    void
+    take_in_u(const Vector &du);
+
     /// u (and u_ghosted) = u_0 + @p du_in_u.
     void
     move_to(const Vector &du_in_u);
