@@ -436,6 +436,20 @@ def o_ring_locking(root):
                     body)
 
 
+def suite_time(root):
+    """The test suite's time by class of test (bench/suite_time.py)."""
+    table = rows(root, "suite-time.csv")
+    total = next(float(r["slot_seconds"]) for r in table if r["class"] == "all")
+    body = []
+    for r in table:
+        share = f"{100 * float(r['slot_seconds']) / total:.0f} %"
+        wall = f"{float(r['wall_s']):.0f} s" if r["wall_s"] else ""
+        body.append([r["class"], thousands(r["tests"]), f"{float(r['seconds']):.0f}",
+                     f"{float(r['slot_seconds']):.0f}", share, wall])
+    return markdown(["tests", "count", "seconds", "slot-seconds", "share", "wall time (-j 2)"],
+                    body)
+
+
 TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
@@ -454,6 +468,7 @@ TABLES = {
     "two-bodies": two_bodies,
     "nearly-incompressible-lame": lame_elastic,
     "nearly-incompressible-example2": example2_newton,
+    "suite-time": suite_time,
 }
 
 
