@@ -59,6 +59,8 @@ def main():
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "suite-time.csv"))
     args = parser.parse_args()
+    # Asked before the run: CTest's listing writes its LastTest.log anew.
+    slots = processors(args.build)
     if args.log:
         with open(args.log) as f:
             output = f.read()
@@ -69,7 +71,9 @@ def main():
     wall = re.findall(r"Total Test time \(real\) = +([0-9.]+) sec", output)
     if not times or not wall:
         sys.exit("no test results in the suite's output: is it a whole run of ctest?")
-    slots = processors(args.build)
+    # The run's verdict, and which tests failed: their times count all the same.
+    print("\n".join(re.findall(r"^\d+% tests passed.*$|^\s+\d+ - .*\((?:Failed|Timeout)\)$",
+                               output, re.M)))
     commit = args.commit or ("" if args.log else subprocess.run(
         ["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
         capture_output=True, text=True).stdout.strip())
