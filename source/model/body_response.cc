@@ -24,18 +24,19 @@ namespace FrictionalContact
 
   template <int dim>
   BodyResponse<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
-    : quadrature(2)
-    , fe_values(fe, quadrature, update_gradients | update_JxW_values)
+    : gauss(2)
+    , gauss_values(fe, gauss, update_gradients | update_JxW_values)
+    , lobatto_values(fe, QGaussLobatto<dim>(3), update_gradients | update_JxW_values)
     , dof(GeometryInfo<dim>::vertices_per_cell)
     , u(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
-    , vertex_gradient(quadrature.size(),
+    , vertex_gradient(lobatto_values.n_quadrature_points,
                       std::vector<Tensor<1, dim>>(GeometryInfo<dim>::vertices_per_cell))
     , mean_divergence(fe.n_dofs_per_cell())
-    , responses(quadrature.size())
-    , strain(quadrature.size())
-    , deformation_gradient(quadrature.size())
-    , jacobian(quadrature.size(), 1.)
+    , responses(lobatto_values.n_quadrature_points)
+    , strain(lobatto_values.n_quadrature_points)
+    , deformation_gradient(lobatto_values.n_quadrature_points)
+    , jacobian(lobatto_values.n_quadrature_points, 1.)
     , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , force(fe.n_dofs_per_cell())
   {
@@ -55,9 +56,11 @@ namespace FrictionalContact
     CellScratch                                          &scratch,
     double                                               *new_history) const
   {
-    FEValues<dim>            &fe_values  = scratch.fe_values;
     const unsigned int        n_vertices = scratch.dof.size();
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
+    scratch.corner_points                = law.elastic().corner_points;
+    FEValues<dim> &fe_values =
+      scratch.corner_points ? scratch.lobatto_values : scratch.gauss_values;
     fe_values.reinit(cell);
     cell->get_dof_values(u_ghosted, scratch.u);
     scratch.finite_strain = law.elastic().finite_strain;
@@ -295,7 +298,7 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         if (double *values = history.values(cell))
           {
-            const unsigned int n = scratch.quadrature.size() *
+            const unsigned int n = scratch.gauss.size() *
                                    materials.of(cell->material_id()).n_history_values();
             updated.resize(n);
             evaluate_cell(cell, u_ghosted, false, scratch, updated.data());
@@ -328,11 +331,12 @@ namespace FrictionalContact
     CellScratch            scratch(dof_handler.get_fe());
     std::vector<CellState<dim>> states(
       dof_handler.get_triangulation().n_active_cells());
-    const unsigned int n_points = scratch.quadrature.size();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
+          const FEValues<dim>      &fe_values = scratch.fe_values();
+          const unsigned int        n_points  = fe_values.n_quadrature_points;
           const MaterialModel<dim> &law       = materials.of(cell->material_id());
           const double             *committed = history.values(cell);
           CellState<dim>           &state     = states[cell->active_cell_index()];
@@ -343,14 +347,14 @@ namespace FrictionalContact
           double                     volume = 0, reference_volume = 0;
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              volume += jacobian[q] * scratch.fe_values.JxW(q);
-              reference_volume += scratch.fe_values.JxW(q);
+              volume += jacobian[q] * fe_values.JxW(q);
+              reference_volume += fe_values.JxW(q);
             }
           state.jacobian = volume / reference_volume;
           for (unsigned int q = 0; q < n_points; ++q)
             {
               const MaterialResponse<dim> &r = scratch.responses[q];
-              const double weight = jacobian[q] * scratch.fe_values.JxW(q) / volume;
+              const double weight = jacobian[q] * fe_values.JxW(q) / volume;
               SymmetricTensor<2, dim> stress       = r.stress;
               double                  out_of_plane = r.out_of_plane_stress;
               if (scratch.finite_strain)

@@ -98,9 +98,9 @@ namespace FrictionalContact
     if (with_tangent)
       scratch.matrix = 0;
     double C[dim][dim][dim][dim];
-    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+    for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
       {
-        const double                 JxW = scratch.fe_values.JxW(q);
+        const double                 JxW = scratch.fe_values().JxW(q);
         const MaterialResponse<dim> &r   = scratch.responses[q];
         const auto                  &G   = scratch.vertex_gradient[q];
         for (unsigned int a = 0; a < n_vertices; ++a)
@@ -182,9 +182,9 @@ namespace FrictionalContact
     double h[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
     double g[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
     double volume                                                 = 0;
-    for (const unsigned int q : scratch.fe_values.quadrature_point_indices())
+    for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
       {
-        const double                 JxW = scratch.fe_values.JxW(q);
+        const double                 JxW = scratch.fe_values().JxW(q);
         const MaterialResponse<dim> &r   = scratch.responses[q];
         const auto                  &G   = scratch.vertex_gradient[q];
         const Tensor<2, dim>        &F   = scratch.deformation_gradient[q];

@@ -55,6 +55,18 @@ namespace FrictionalContact
       "is the St. Venant-Kirchhoff law; finite strain takes the standard "
       "element (the nearly incompressible law averages the volume ratio "
       "over each cell itself).");
+    prm.declare_entry(
+      "Quadrature",
+      "Gauss",
+      Patterns::Anything(),
+      "Where a finite-strain body's law is evaluated: 'Gauss', the 2 x 2 "
+      "(x 2) Gauss points, or 'Gauss-Lobatto', the 3 x 3 (x 3) points that "
+      "include each cell's corners (as exact for Q1, and 9/4 and 27/8 times "
+      "the points). A Q1 cell can fold at a corner while det F stays "
+      "positive at its Gauss points; with the corners among the points the "
+      "law's energy, which grows without bound as det F falls to zero, "
+      "holds every corner open. For cells squeezed and sheared far, as at "
+      "a held edge in front of an ironing die. Small strain takes 'Gauss'.");
   }
 
 
@@ -162,6 +174,17 @@ namespace FrictionalContact
                   "<Material/Kinematics> = finite strain take 'standard' "
                   "(or 'auto')");
 
+    const std::string quadrature = entries.get("Quadrature");
+    if (quadrature != "Gauss" && quadrature != "Gauss-Lobatto")
+      Input::fail(entries.path_of("Quadrature"), quadrature,
+                  "'Gauss' or 'Gauss-Lobatto' is expected");
+    corner_points = quadrature == "Gauss-Lobatto";
+    if (corner_points && !finite_strain)
+      Input::fail(entries.path_of("Quadrature"), quadrature,
+                  "the Gauss-Lobatto points hold a finite-strain cell's corners "
+                  "open: set <Material/Kinematics> = finite strain, or take "
+                  "'Gauss'");
+
     if (!(youngs_modulus > 0))
       Input::fail("Material/Young's modulus",
                   Input::to_text(youngs_modulus),
@@ -247,6 +270,8 @@ namespace FrictionalContact
       text += ", B-bar element";
     if (finite_strain)
       text += ", finite strain";
+    if (corner_points)
+      text += ", Gauss-Lobatto points";
     return text;
   }
 
@@ -348,6 +373,12 @@ namespace FrictionalContact
                         "' is written for small strain only: take "
                         "'neo-Hookean', 'nearly incompressible neo-Hookean' or "
                         "'linear elastic' at finite strain");
+        if (materials[id]->elastic().corner_points &&
+            materials[id]->n_history_values() > 0)
+          Input::fail(material.path_of("Quadrature"), "Gauss-Lobatto",
+                      "the law '" + law + "' of the body '" + name +
+                        "' keeps a history, which lives at the Gauss points: "
+                        "take 'Gauss'");
         if (!finite_strain && materials[id]->needs_finite_strain())
           Input::fail(material.path_of("Kinematics"), "small strain",
                       "the law '" + law + "' of the body '" + name +

@@ -137,14 +137,27 @@ namespace FrictionalContact
     cell_states(const Vector &u_ghosted) const;
 
   private:
-    /// What one cell needs: FEValues on the 2 x 2 (x 2) Gauss points, the
-    /// local displacement, the strains and the responses at the points.
+    /// What one cell needs: FEValues on the 2 x 2 (x 2) Gauss points and
+    /// on the 3 x 3 (x 3) Gauss-Lobatto points (a body with
+    /// <Material/Quadrature> = Gauss-Lobatto), the local displacement, the
+    /// strains and the responses at the points of the cell's rule.
     struct CellScratch
     {
       explicit CellScratch(const FiniteElement<dim> &fe);
 
-      QGauss<dim>                          quadrature;
-      FEValues<dim>                        fe_values;
+      /// The FEValues of the rule of the last cell evaluate_cell() took.
+      const FEValues<dim> &
+      fe_values() const
+      {
+        return corner_points ? lobatto_values : gauss_values;
+      }
+
+      /// The Gauss points: those of the history (no law with history takes
+      /// the Gauss-Lobatto points).
+      QGauss<dim>                          gauss;
+      FEValues<dim>                        gauss_values;
+      FEValues<dim>                        lobatto_values;
+      bool                                 corner_points = false;
       /// The dof of component c at vertex a: dof[a][c].
       std::vector<std::array<unsigned int, dim>> dof;
       dealii::Vector<double>               u;

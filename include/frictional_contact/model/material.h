@@ -137,6 +137,10 @@ namespace FrictionalContact
     /// law's strain is then the Green-Lagrange strain E and its stress the
     /// second Piola-Kirchhoff stress S.
     bool   finite_strain;
+    /// Whether the law is evaluated at the 3 x 3 (x 3) Gauss-Lobatto
+    /// points, the cell's corners among them (<Material/Quadrature>;
+    /// finite strain only), instead of the 2 x 2 (x 2) Gauss points.
+    bool   corner_points;
     /// G: the shear modulus.
     double shear_modulus;
     /// K: the bulk modulus of dim-dimensional elasticity (lambda + 2 G / dim,
