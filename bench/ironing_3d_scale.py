@@ -7,20 +7,23 @@ increment, with the preconditioner built again on the tangent as the
 Krylov iterations grow (<Linear solver/Tangent rebuild factor>, the
 default 2) and never (0), and with the geometry taken at every Newton
 iterate in the tool's frames (<Contact/Rigid tool/Geometry at finite
-strain>), and once without contact for the unit of time (one elastic
+strain>), with the block's law at the Gauss points or at the Gauss-Lobatto
+points, which include the cells' corners (<Material/Quadrature>), and
+once without contact for the unit of time (one elastic
 solve on the same mesh), in one run of this script. Records the
 increments, cuts, Newton steps, Krylov iterations, solves of the pairs'
 geometry, and the solve time (the timer's Assembly, Elastic solve and
 Contact solve) in seconds and in elastic solves. Replaces the rows of
-this mesh in doc/benchmarks/ironing-3d-scale.csv (those of other meshes
-stay: the last run of each) and rewrites the table of doc/performance.md
+this mesh and quadrature in doc/benchmarks/ironing-3d-scale.csv (the
+others stay: the last run of each) and rewrites the table of doc/performance.md
 ("The 3D ironing at scale").
 
 With --end-time T (< 2), the run stops there, its increments as long as
 the test's (0.1): on fine cells the last part of the slide pushes the
-material against the block's far end until a cell folds (det F = 0 at a
-corner) and the solve stalls, before t = 2 (doc/performance.md, "The 3D
-ironing at scale").
+material against the block's far end until a cell folds at a corner
+between its Gauss points (det F = 0 there) and the solve stalls, before
+t = 2, unless the law is evaluated at the Gauss-Lobatto points
+(doc/performance.md, "The 3D ironing at scale").
 With --hard-iterations M, an increment whose solve took more than M
 Newton steps has the next one halved (<Loading/Hard increment
 iterations>); with --folder, the runs are made there (and kept: their
@@ -29,6 +32,7 @@ folder.
 
 usage: bench/ironing_3d_scale.py [--program build/contact] [--cells 72,8,24]
            [--variants "fixed point:2,fixed point:0,every Newton iterate:2"]
+           (a variant may name a quadrature: "every Newton iterate:2:Gauss-Lobatto")
            [--end-time 2] [--hard-iterations 0] [--folder DIR]
 """
 import argparse
@@ -45,7 +49,9 @@ sys.path.insert(0, HERE)
 from doc_tables import replace_rows, write_tables  # noqa: E402
 from runs import run as run_program, solve_seconds, print_row  # noqa: E402
 
-COLUMNS = ["cells", "ranks", "d", "end_time", "tool_geometry", "tangent_rebuild_factor",
+COLUMNS = ["cells", "ranks", "d", "end_time", "reached", "stopped", "tool_geometry",
+           "quadrature",
+           "tangent_rebuild_factor",
            "hard_increment_iterations", "increments", "cuts", "halved_ahead",
            "newton_iterations", "krylov_iterations", "amg_setups", "geometry_solves",
            "solve_s", "elastic_solve_s", "solve_in_elastic_solves"]
@@ -81,9 +87,11 @@ def scene(folder, cells):
 def run(program, text, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(text)
-    output, _ = run_program([program, "scene.prm"], 2, folder)
+    output, _ = run_program([program, "scene.prm"], 2, folder, may_fail=True)
+    failure = re.findall(r"^Error: .*", output, re.M)
     increments = re.findall(r"^Increment \d+/\d+, t = \S+: (\d+) Newton iterations, "
                             r"(\d+) Krylov iterations, (\d+) AMG set-ups", output, re.M)
+    reached = re.findall(r"^Increment \d+/\d+, t = ([^:]+):", output, re.M)
     geometry = [int(n) for n in re.findall(r"contact pairs' geometry: (\d+) solve", output)]
     return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
                 increments=len(increments),
@@ -93,7 +101,12 @@ def run(program, text, folder):
                 krylov_iterations=sum(int(k) for _, k, _ in increments),
                 amg_setups=sum(int(a) for _, _, a in increments),
                 geometry_solves=sum(geometry),
-                solve_s=solve_seconds(output))
+                # A run that stops (a cell folded, a solve that failed) has
+                # no summary: the sum of its increments' solve times.
+                solve_s=solve_seconds(output) if not failure else
+                sum(float(t) for t in re.findall(r"solve wall time ([0-9.e+-]+) s", output)),
+                reached=reached[-1] if reached else "0",
+                stopped=failure[-1][len("Error: "):] if failure else "")
 
 
 def main():
@@ -106,7 +119,8 @@ def main():
     parser.add_argument("--variants",
                         default="fixed point:2,fixed point:0,every Newton iterate:2",
                         help="<Contact/Rigid tool/Geometry at finite strain>:<Linear "
-                             "solver/Tangent rebuild factor> pairs, separated by ','")
+                             "solver/Tangent rebuild factor>[:<Material/Quadrature>], "
+                             "separated by ','")
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "ironing-3d-scale.csv"))
     parser.add_argument("--end-time", type=float, default=2.,
@@ -123,7 +137,8 @@ def main():
         text = scene(folder, cells)
         unit = run(args.program, text + ELASTIC, folder)["solve_s"]
         for variant in args.variants.split(","):
-            geometry, factor = variant.split(":")
+            geometry, factor, *rule = variant.split(":")
+            quadrature = rule[0] if rule else "Gauss"
             result = run(args.program, text + "subsection Loading\n"
                          f"  set End time = {args.end_time:g}\n"
                          f"  set Number of increments = {round(args.end_time / 0.1)}\n"
@@ -131,11 +146,12 @@ def main():
                          "subsection Linear solver\n"
                          f"  set Tangent rebuild factor = {factor}\nend\n"
                          "subsection Contact\n  subsection Rigid tool\n"
-                         f"    set Geometry at finite strain = {geometry}\n  end\nend\n",
+                         f"    set Geometry at finite strain = {geometry}\n  end\nend\n"
+                         f"subsection Material\n  set Quadrature = {quadrature}\nend\n",
                          folder)
             row = dict(result, cells=" x ".join(map(str, cells)), ranks=2,
                        end_time=f"{args.end_time:g}",
-                       tool_geometry=geometry,
+                       tool_geometry=geometry, quadrature=quadrature,
                        tangent_rebuild_factor=factor,
                        hard_increment_iterations=args.hard_iterations,
                        elastic_solve_s=f"{unit:.3f}",
@@ -146,7 +162,9 @@ def main():
     kept = []
     if os.path.exists(args.csv):
         with open(args.csv, newline="") as f:
-            kept = [row for row in csv.DictReader(f) if row["cells"] != rows[0]["cells"]]
+            kept = [row for row in csv.DictReader(f)
+                    if (row["cells"], row.get("quadrature") or "Gauss") not in
+                    {(new["cells"], new["quadrature"]) for new in rows}]
     replace_rows(args.csv, COLUMNS, kept + rows)
     for line in write_tables():
         print(line)
