@@ -1,7 +1,8 @@
 // The finite-strain element's tangent against central differences of its
 // internal force, for each law at finite strain (St. Venant-Kirchhoff, the
 // compressible neo-Hookean law, the nearly incompressible one with its
-// coupling through the cell's mean volume ratio, or the point's): a ball's
+// coupling through the cell's mean volume ratio, or the point's), at the
+// Gauss points and at the Gauss-Lobatto points (the corners'): a ball's
 // mesh (distorted cells) under a smooth displacement of 20 % strains, K_T v
 // compared with
 // (f(u + h v) - f(u - h v)) / 2h for a direction v over every free dof.
@@ -20,7 +21,9 @@ namespace
 {
   template <int dim>
   void
-  check(const std::string &law, const std::string &volume_ratio = "")
+  check(const std::string &law,
+        const std::string &volume_ratio = "",
+        const std::string &quadrature   = "Gauss")
   {
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
@@ -28,7 +31,8 @@ namespace
                                 "subsection Mesh refinement\n  set Global refinements = 1\nend\n"
                                 "subsection Material\n  set Model = " + law +
                                 "\n  set Kinematics = finite strain\n"
-                                "  set Poisson's ratio = 0.45\n" +
+                                "  set Poisson's ratio = 0.45\n"
+                                "  set Quadrature = " + quadrature + "\n" +
                                 (volume_ratio.empty() ?
                                    std::string() :
                                    "  subsection Nearly incompressible neo-Hookean\n"
@@ -80,6 +84,7 @@ namespace
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << dim << "D, " << law
                 << (volume_ratio.empty() ? "" : " (volume ratio: " + volume_ratio + ")")
+                << (quadrature == "Gauss" ? "" : " (" + quadrature + " points)")
                 << ": K_T v against central differences: "
                 << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
     if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -101,4 +106,9 @@ main(int argc, char *argv[])
     }
   check<2>("nearly incompressible neo-Hookean", "point");
   check<3>("nearly incompressible neo-Hookean", "point");
+  for (const std::string law : {"neo-Hookean", "nearly incompressible neo-Hookean"})
+    {
+      check<2>(law, "", "Gauss-Lobatto");
+      check<3>(law, "", "Gauss-Lobatto");
+    }
 }
