@@ -105,6 +105,32 @@ function(add_script_test name script processors)
     PROCESSORS ${processors})
 endfunction()
 
+# A scene tests/<scene>.prm run on <ranks> ranks (the test <scene>.run, or
+# <scene>.mpirun=<ranks>.run; the fixture <scene>) and a check of what it
+# wrote: the test <scene>.<check> runs the Python script and arguments that
+# follow, OUTPUT in them standing for the run's output folder
+# (output-<scene>).
+function(add_scene_check _scene _ranks _check)
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_scene})
+  configure_file(${_scene}.prm ${_directory}/${_scene}.prm @ONLY)
+  set(_run ${_scene})
+  if(_ranks GREATER 1)
+    set(_run ${_scene}.mpirun=${_ranks})
+  endif()
+  add_test(NAME ${_run}.run
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
+            $<TARGET_FILE:contact> ${_scene}.prm ${_ranks}
+    WORKING_DIRECTORY ${_directory})
+  set_tests_properties(${_run}.run PROPERTIES FIXTURES_SETUP ${_scene}
+    ENVIRONMENT "${_environment}" PROCESSORS ${_ranks})
+  list(TRANSFORM ARGN REPLACE "^OUTPUT" "${_directory}/output-${_scene}")
+  list(GET ARGN 0 _script)
+  list(REMOVE_AT ARGN 0)
+  add_test(NAME ${_scene}.${_check}
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/${_script} ${ARGN})
+  set_tests_properties(${_scene}.${_check} PROPERTIES FIXTURES_REQUIRED ${_scene})
+endfunction()
+
 # Kill a run after a checkpoint, resume it on 2 ranks, compare with a run
 # that was not interrupted.
 add_script_test(restart restart 2)
@@ -531,20 +557,8 @@ add_script_test(restart_plastic restart_plastic 2)
 # on the moved top face, the history carried to the children): still the
 # exact curve to 1e-10 (j2_uniaxial_adaptive.exact). The Kelly estimate of a
 # uniform field is round-off, so which cells it refines is not compared.
-set(_directory ${CMAKE_CURRENT_BINARY_DIR}/j2_uniaxial_adaptive)
-configure_file(j2_uniaxial_adaptive.prm ${_directory}/j2_uniaxial_adaptive.prm @ONLY)
-add_test(NAME j2_uniaxial_adaptive.run
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
-          $<TARGET_FILE:contact> j2_uniaxial_adaptive.prm 1
-  WORKING_DIRECTORY ${_directory})
-set_tests_properties(j2_uniaxial_adaptive.run PROPERTIES FIXTURES_SETUP
-  j2_uniaxial_adaptive ENVIRONMENT "${_environment}")
-add_test(NAME j2_uniaxial_adaptive.exact
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_uniaxial.py
-    ${CMAKE_CURRENT_BINARY_DIR}/j2_uniaxial_adaptive/output-j2_uniaxial_adaptive
-    --tolerance 1e-10)
-set_tests_properties(j2_uniaxial_adaptive.exact PROPERTIES FIXTURES_REQUIRED
-  j2_uniaxial_adaptive)
+add_scene_check(j2_uniaxial_adaptive 1 exact
+  check_uniaxial.py OUTPUT --tolerance 1e-10)
 
 # The residual impression of step-42's indentation, pressed and lifted, on
 # 4, 8 and 16 cells per edge: a permanent dent that converges with the

@@ -19,21 +19,8 @@ foreach(_test neo_hookean_compression_2d neo_hookean_compression_3d.mpirun=2
 endforeach()
 
 # The same with the law at the 27 Gauss-Lobatto points of each cell, 2 ranks.
-set(_directory ${CMAKE_CURRENT_BINARY_DIR}/neo_hookean_compression_3d_lobatto)
-configure_file(neo_hookean_compression_3d_lobatto.prm
-  ${_directory}/neo_hookean_compression_3d_lobatto.prm @ONLY)
-add_test(NAME neo_hookean_compression_3d_lobatto.mpirun=2.run
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
-          $<TARGET_FILE:contact> neo_hookean_compression_3d_lobatto.prm 2
-  WORKING_DIRECTORY ${_directory})
-set_tests_properties(neo_hookean_compression_3d_lobatto.mpirun=2.run PROPERTIES
-  FIXTURES_SETUP neo_hookean_compression_3d_lobatto ENVIRONMENT "${_environment}"
-  PROCESSORS 2)
-add_test(NAME neo_hookean_compression_3d_lobatto.exact
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_neo_hookean.py
-    ${_directory}/output-neo_hookean_compression_3d_lobatto --tolerance 1e-10)
-set_tests_properties(neo_hookean_compression_3d_lobatto.exact PROPERTIES
-  FIXTURES_REQUIRED neo_hookean_compression_3d_lobatto)
+add_scene_check(neo_hookean_compression_3d_lobatto 2 exact
+  check_neo_hookean.py OUTPUT --tolerance 1e-10)
 
 # The O-ring squeezed by 25 % (neo-Hookean at finite strain) on 2, 3 and 4
 # levels of refinement: its force converges with the mesh
@@ -149,22 +136,9 @@ add_ironing_3d_test(ironing_3d_newton --most-newton 160)
 
 # The same frictionless, on 2 ranks: at most 12 Newton steps in every
 # increment (ironing_3d_newton_frictionless.prm).
-set(_directory ${CMAKE_CURRENT_BINARY_DIR}/ironing_3d_newton_frictionless)
-configure_file(ironing_3d_newton_frictionless.prm
-  ${_directory}/ironing_3d_newton_frictionless.prm @ONLY)
-add_test(NAME ironing_3d_newton_frictionless.mpirun=2.run
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
-          $<TARGET_FILE:contact> ironing_3d_newton_frictionless.prm 2
-  WORKING_DIRECTORY ${_directory})
-set_tests_properties(ironing_3d_newton_frictionless.mpirun=2.run PROPERTIES
-  FIXTURES_SETUP ironing_3d_newton_frictionless ENVIRONMENT "${_environment}"
-  PROCESSORS 2)
-add_test(NAME ironing_3d_newton_frictionless.newton_per_increment
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
-    ${_directory}/output-ironing_3d_newton_frictionless/statistics
-    --rows 1-20 --at-most "Contact solver iterations" 12)
-set_tests_properties(ironing_3d_newton_frictionless.newton_per_increment PROPERTIES
-  FIXTURES_REQUIRED ironing_3d_newton_frictionless)
+add_scene_check(ironing_3d_newton_frictionless 2 newton_per_increment
+  check_statistics.py OUTPUT/statistics
+  --rows 1-20 --at-most "Contact solver iterations" 12)
 
 # The O-ring nearly incompressible on the mean-dilatation element: 40
 # increments without a cut (o_ring_nearly_incompressible.prm).
@@ -183,16 +157,5 @@ set_tests_properties(o_ring_nearly_incompressible PROPERTIES ENVIRONMENT "${_env
 # 0.051 measured at the end); with the Gauss points the cell where the
 # pushed face meets the base folds at its corner at t = 0.71 however far
 # the increments are cut (errors/corner_fold_gauss.prm).
-set(_directory ${CMAKE_CURRENT_BINARY_DIR}/corner_fold)
-configure_file(corner_fold.prm ${_directory}/corner_fold.prm @ONLY)
-add_test(NAME corner_fold.mpirun=2.run
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
-          $<TARGET_FILE:contact> corner_fold.prm 2
-  WORKING_DIRECTORY ${_directory})
-set_tests_properties(corner_fold.mpirun=2.run PROPERTIES
-  FIXTURES_SETUP corner_fold ENVIRONMENT "${_environment}" PROCESSORS 2)
-add_test(NAME corner_fold.corners_open
-  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
-    ${_directory}/output-corner_fold/statistics
-    --rows 1-10 --between "Smallest det F" 0.02 1)
-set_tests_properties(corner_fold.corners_open PROPERTIES FIXTURES_REQUIRED corner_fold)
+add_scene_check(corner_fold 2 corners_open
+  check_statistics.py OUTPUT/statistics --rows 1-10 --between "Smallest det F" 0.02 1)
