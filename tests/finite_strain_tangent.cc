@@ -111,4 +111,6 @@ main(int argc, char *argv[])
       check<2>(law, "", "Gauss-Lobatto");
       check<3>(law, "", "Gauss-Lobatto");
     }
+  check<2>("nearly incompressible neo-Hookean", "point", "Gauss-Lobatto");
+  check<3>("nearly incompressible neo-Hookean", "point", "Gauss-Lobatto");
 }

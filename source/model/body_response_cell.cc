@@ -6,6 +6,7 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/model/body_response.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace FrictionalContact
@@ -178,10 +179,17 @@ namespace FrictionalContact
     scratch.force                 = 0;
     if (with_tangent)
       scratch.matrix = 0;
-    constexpr unsigned int n_points = GeometryInfo<dim>::vertices_per_cell; // 2^dim Gauss points
-    double h[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
-    double g[n_points][GeometryInfo<dim>::vertices_per_cell][dim] = {};
-    double volume                                                 = 0;
+    // At most the 3^dim Gauss-Lobatto points; rows of h and g: one per
+    // point for the point's volume ratio, one for the cell's mean.
+    constexpr unsigned int max_points = dim == 2 ? 9 : 27;
+    const unsigned int     n_points   = scratch.fe_values().n_quadrature_points;
+    const unsigned int     n_rows     = !averages ? 0 : pointwise ? n_points : 1;
+    AssertIndexRange(n_points, max_points + 1);
+    double h[max_points][GeometryInfo<dim>::vertices_per_cell][dim];
+    double g[max_points][GeometryInfo<dim>::vertices_per_cell][dim];
+    std::fill(&h[0][0][0], &h[0][0][0] + n_rows * n_vertices * dim, 0.);
+    std::fill(&g[0][0][0], &g[0][0][0] + n_rows * n_vertices * dim, 0.);
+    double volume = 0;
     for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
       {
         const double                 JxW = scratch.fe_values().JxW(q);
@@ -251,7 +259,7 @@ namespace FrictionalContact
     if (with_tangent)
       copy_lower_to_upper(scratch.matrix);
     if (with_tangent && averages)
-      for (unsigned int row = 0; row < (pointwise ? n_points : 1); ++row)
+      for (unsigned int row = 0; row < n_rows; ++row)
         for (unsigned int a = 0; a < n_vertices; ++a)
           for (unsigned int c = 0; c < dim; ++c)
             for (unsigned int b = 0; b < n_vertices; ++b)
