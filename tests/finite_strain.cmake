@@ -22,6 +22,17 @@ endforeach()
 add_scene_check(neo_hookean_compression_3d_lobatto 2 exact
   check_neo_hookean.py OUTPUT --tolerance 1e-10)
 
+# Hertz at finite strain (hertz_2d_finite_strain) with the law at the
+# Gauss-Lobatto points: Hertz's radius and peak pressure, and the forces of
+# the Gauss points' run within 1e-5 (measured 1e-6).
+add_scene_check(hertz_2d_finite_strain_lobatto 1 analytic
+  check_analytic.py hertz OUTPUT)
+contact_compare_statistics(hertz_2d_finite_strain_lobatto.gauss_points
+  "hertz_2d_finite_strain;hertz_2d_finite_strain_lobatto"
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_finite_strain/output-hertz_2d_finite_strain/statistics
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_2d_finite_strain_lobatto/output-hertz_2d_finite_strain_lobatto/statistics
+  1e-5)
+
 # The O-ring squeezed by 25 % (neo-Hookean at finite strain) on 2, 3 and 4
 # levels of refinement: its force converges with the mesh
 # (o_ring_convergence.sh).
@@ -154,8 +165,15 @@ set_tests_properties(o_ring_nearly_incompressible PROPERTIES ENVIRONMENT "${_env
 # The law at the Gauss-Lobatto points (<Material/Quadrature>): a block held
 # at its base and pushed 0.5 along by one face (corner_fold.prm, 2 ranks)
 # runs its 10 increments with every cell's corners open (smallest det F
-# 0.051 measured at the end); with the Gauss points the cell where the
-# pushed face meets the base folds at its corner at t = 0.71 however far
-# the increments are cut (errors/corner_fold_gauss.prm).
+# 0.051 measured at the end); with the Gauss points (corner_fold_gauss.prm)
+# the cell where the pushed face meets the base folds at its corner at
+# t = 0.71 however far the increments are cut, and the run stops (exit
+# code 2) with one line that names it.
 add_scene_check(corner_fold 2 corners_open
   check_statistics.py OUTPUT/statistics --rows 1-10 --between "Smallest det F" 0.02 1)
+set(_directory ${CMAKE_CURRENT_BINARY_DIR}/corner_fold_gauss)
+configure_file(corner_fold_gauss.prm ${_directory}/corner_fold_gauss.prm @ONLY)
+add_test(NAME corner_fold_gauss.folds
+  COMMAND sh -c "$<TARGET_FILE:contact> corner_fold_gauss.prm > output.raw 2>&1; code=$?; cat output.raw; test $code -eq 2 && test $(grep -c '^Error: the solve failed: the cell at (0.0625, 0.1875) is inverted' output.raw) -eq 1 && echo 'folded as expected'"
+  WORKING_DIRECTORY ${_directory})
+set_tests_properties(corner_fold_gauss.folds PROPERTIES ENVIRONMENT "${_environment}")
