@@ -15,6 +15,7 @@ usage: bench/ironing_fold.py [--program build/contact]
            (refinements of the scene's cells of 0.25 : quadrature)
 """
 import argparse
+import csv
 import os
 import re
 import sys
@@ -74,7 +75,14 @@ def main():
                      if last["stopped_at"] else "")
                   + f" ({wall:.0f} s)")
             rows += mine
-    replace_rows(args.csv, COLUMNS, rows)
+    # The rows of the runs not made this time stay.
+    made = {(r["cell_size"], r["quadrature"]) for r in rows}
+    kept = []
+    if os.path.exists(args.csv):
+        with open(args.csv, newline="") as f:
+            kept = [r for r in csv.DictReader(f)
+                    if (float(r["cell_size"]), r["quadrature"]) not in made]
+    replace_rows(args.csv, COLUMNS, kept + rows)
     for line in write_tables():
         print(line)
 

@@ -35,8 +35,8 @@ namespace FrictionalContact
                           Patterns::Anything(),
                           "theta in U(theta): 'cell mean', the mean of det F "
                           "over the cell (the mean-dilatation element, which "
-                          "does not lock), or 'point', det F at each Gauss "
-                          "point (the standard element, which locks as nu "
+                          "does not lock), or 'point', det F at each point of "
+                          "the body's rule (the standard element, which locks as nu "
                           "approaches 1/2: for comparison).");
       }
 

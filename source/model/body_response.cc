@@ -161,8 +161,8 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         {
           evaluate_cell(cell, u_ghosted, tangent != nullptr, scratch, nullptr);
-          for (const MaterialResponse<dim> &r : scratch.responses)
-            plastic_points += r.plastic ? 1 : 0;
+          for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
+            plastic_points += scratch.responses[q].plastic ? 1 : 0;
           cell_force_and_tangent(materials.of(cell->material_id()).elastic().mean_dilatation,
                                  tangent != nullptr,
                                  scratch);
@@ -224,10 +224,10 @@ namespace FrictionalContact
           // otherwise first whether the cell is elastic.
           evaluate_cell(cell, u_ghosted, !changed_cells_only, scratch, nullptr);
           bool elastic = true;
-          for (const MaterialResponse<dim> &r : scratch.responses)
+          for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
             {
-              plastic_points += r.plastic ? 1 : 0;
-              elastic = elastic && !r.plastic;
+              plastic_points += scratch.responses[q].plastic ? 1 : 0;
+              elastic = elastic && !scratch.responses[q].plastic;
             }
           cell->get_dof_indices(scratch.dof_indices);
           if (changed_cells_only && elastic && elastic_cells[c])

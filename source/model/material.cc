@@ -63,10 +63,11 @@ namespace FrictionalContact
       "(x 2) Gauss points, or 'Gauss-Lobatto', the 3 x 3 (x 3) points that "
       "include each cell's corners (as exact for Q1, and 9/4 and 27/8 times "
       "the points). A Q1 cell can fold at a corner while det F stays "
-      "positive at its Gauss points; with the corners among the points the "
-      "law's energy, which grows without bound as det F falls to zero, "
-      "holds every corner open. For cells squeezed and sheared far, as at "
-      "a held edge in front of an ironing die. Small strain takes 'Gauss'.");
+      "positive at its Gauss points; with the corners among the points an "
+      "energy that grows without bound as det F falls to zero at a point "
+      "(the neo-Hookean law's; not St. Venant-Kirchhoff's) holds every "
+      "corner open. For cells squeezed and sheared far, as at a held edge "
+      "in front of an ironing die. Small strain takes 'Gauss'.");
   }
 
 
@@ -182,8 +183,8 @@ namespace FrictionalContact
     if (corner_points && !finite_strain)
       Input::fail(entries.path_of("Quadrature"), quadrature,
                   "the Gauss-Lobatto points hold a finite-strain cell's corners "
-                  "open: set <Material/Kinematics> = finite strain, or take "
-                  "'Gauss'");
+                  "open: set <Material/Kinematics> = finite strain for this "
+                  "body, or take 'Gauss'");
 
     if (!(youngs_modulus > 0))
       Input::fail("Material/Young's modulus",

@@ -42,7 +42,8 @@ namespace FrictionalContact
 
   /**
    * The bodies' response to a displacement u: at the quadrature points of
-   * the locally owned cells, the strain of the element (the standard Q1
+   * the locally owned cells (the Gauss points, or a finite-strain body's
+   * Gauss-Lobatto points: <Material/Quadrature>), the strain of the element (the standard Q1
    * element's, or the B-bar element's with the cell average of the
    * dilatation as its volumetric part; at finite strain the Green-Lagrange
    * strain of F = I + Grad u), the stress of each body's law from
