@@ -712,6 +712,18 @@ def replace_rows(path, columns, rows):
     append_rows(path, columns, rows)
 
 
+def replace_runs(path, columns, rows, key):
+    """Writes the CSV @p path with @p rows in place of the rows of the same
+    runs (@p key of a row: the run it belongs to); the rows of other runs
+    stay, for the benches whose file holds the last run of each."""
+    made = {key(row) for row in rows}
+    kept = []
+    if os.path.exists(path):
+        with open(path, newline="") as f:
+            kept = [row for row in csv.DictReader(f) if key(row) not in made]
+    replace_rows(path, columns, kept + rows)
+
+
 def write_tables(root=ROOT, check=False):
     """Rewrites (or with check, compares) every marked table and quote;
     returns 'page: what' for each that differs (see differences())."""

@@ -36,7 +36,6 @@ usage: bench/ironing_3d_scale.py [--program build/contact] [--cells 72,8,24]
            [--end-time 2] [--hard-iterations 0] [--folder DIR]
 """
 import argparse
-import csv
 import os
 import re
 import subprocess
@@ -46,7 +45,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from doc_tables import replace_rows, write_tables  # noqa: E402
+from doc_tables import replace_runs, write_tables  # noqa: E402
 from runs import run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["cells", "ranks", "d", "end_time", "reached", "stopped", "tool_geometry",
@@ -163,13 +162,7 @@ def main():
             row["solve_s"] = f"{result['solve_s']:.1f}"
             print_row(row, COLUMNS)
             rows.append(row)
-    kept = []
-    if os.path.exists(args.csv):
-        with open(args.csv, newline="") as f:
-            kept = [row for row in csv.DictReader(f)
-                    if (row["cells"], row.get("quadrature") or "Gauss") not in
-                    {(new["cells"], new["quadrature"]) for new in rows}]
-    replace_rows(args.csv, COLUMNS, kept + rows)
+    replace_runs(args.csv, COLUMNS, rows, key=lambda r: (r["cells"], r["quadrature"]))
     for line in write_tables():
         print(line)
 

@@ -15,7 +15,6 @@ usage: bench/ironing_fold.py [--program build/contact]
            (refinements of the scene's cells of 0.25 : quadrature)
 """
 import argparse
-import csv
 import os
 import re
 import sys
@@ -26,7 +25,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from check_analytic import read_statistics  # noqa: E402
-from doc_tables import replace_rows, write_tables  # noqa: E402
+from doc_tables import replace_runs, write_tables  # noqa: E402
 from runs import NO_OUTPUT, run as run_program  # noqa: E402
 
 COLUMNS = ["cell_size", "quadrature", "time", "smallest_det_F", "stopped_at", "failed_cell",
@@ -75,14 +74,8 @@ def main():
                      if last["stopped_at"] else "")
                   + f" ({wall:.0f} s)")
             rows += mine
-    # The rows of the runs not made this time stay.
-    made = {(r["cell_size"], r["quadrature"]) for r in rows}
-    kept = []
-    if os.path.exists(args.csv):
-        with open(args.csv, newline="") as f:
-            kept = [r for r in csv.DictReader(f)
-                    if (float(r["cell_size"]), r["quadrature"]) not in made]
-    replace_rows(args.csv, COLUMNS, kept + rows)
+    replace_runs(args.csv, COLUMNS, rows,
+                 key=lambda r: (float(r["cell_size"]), r["quadrature"]))
     for line in write_tables():
         print(line)
 

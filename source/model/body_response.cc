@@ -59,8 +59,7 @@ namespace FrictionalContact
     const unsigned int        n_vertices = scratch.dof.size();
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
     scratch.corner_points                = law.elastic().corner_points;
-    FEValues<dim> &fe_values =
-      scratch.corner_points ? scratch.lobatto_values : scratch.gauss_values;
+    FEValues<dim>            &fe_values  = scratch.fe_values();
     fe_values.reinit(cell);
     cell->get_dof_values(u_ghosted, scratch.u);
     scratch.finite_strain = law.elastic().finite_strain;
@@ -101,9 +100,10 @@ namespace FrictionalContact
         mean_dilatation += trace(strain[q]) * JxW;
         mean_volume_ratio += scratch.jacobian[q] * JxW;
       }
-    if (scratch.finite_strain)
+    if (scratch.finite_strain && !scratch.corner_points)
       {
-        // A cell folded at a corner can have det F > 0 at its points.
+        // A cell folded at a corner can have det F > 0 at its Gauss points
+        // (the Gauss-Lobatto points include the corners).
         std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell>     vertices;
         std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> displacement;
         for (unsigned int a = 0; a < n_vertices; ++a)
@@ -335,7 +335,7 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         {
           evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
-          const FEValues<dim>      &fe_values = scratch.fe_values();
+          FEValues<dim>            &fe_values = scratch.fe_values();
           const unsigned int        n_points  = fe_values.n_quadrature_points;
           const MaterialModel<dim> &law       = materials.of(cell->material_id());
           const double             *committed = history.values(cell);

@@ -147,8 +147,8 @@ namespace FrictionalContact
       explicit CellScratch(const FiniteElement<dim> &fe);
 
       /// The FEValues of the rule of the last cell evaluate_cell() took.
-      const FEValues<dim> &
-      fe_values() const
+      FEValues<dim> &
+      fe_values()
       {
         return corner_points ? lobatto_values : gauss_values;
       }
