@@ -2,7 +2,9 @@
 // internal force, for each law at finite strain (St. Venant-Kirchhoff, the
 // compressible neo-Hookean law, the nearly incompressible one with its
 // coupling through the cell's mean volume ratio, or the point's), at the
-// Gauss points and at the Gauss-Lobatto points (the corners'): a ball's
+// Gauss points and at the Gauss-Lobatto points (the corners'), and of J2
+// plasticity at small strain on the B-bar element (flowing at every
+// point: the consistent tangent of the return map): a ball's
 // mesh (distorted cells) under a smooth displacement of 20 % strains, K_T v
 // compared with
 // (f(u + h v) - f(u - h v)) / 2h for a direction v over every free dof.
@@ -23,16 +25,20 @@ namespace
   void
   check(const std::string &law,
         const std::string &volume_ratio = "",
-        const std::string &quadrature   = "Gauss")
+        const std::string &quadrature   = "Gauss",
+        const std::string &kinematics   = "finite strain")
   {
     ParameterHandler prm;
     Simulator<dim>::declare_parameters(prm);
     prm.parse_input_from_string("subsection Geometry\n  set Model name = half ball\nend\n"
                                 "subsection Mesh refinement\n  set Global refinements = 1\nend\n"
                                 "subsection Material\n  set Model = " + law +
-                                "\n  set Kinematics = finite strain\n"
-                                "  set Poisson's ratio = 0.45\n"
-                                "  set Quadrature = " + quadrature + "\n" +
+                                "\n  set Kinematics = " + kinematics + "\n"
+                                "  set Poisson's ratio = 0.45\n" +
+                                (kinematics == "finite strain" ?
+                                   "  set Quadrature = " + quadrature + "\n" :
+                                   "  subsection J2 plasticity\n"
+                                   "    set Yield stress = 0.001\n  end\n") +
                                 (volume_ratio.empty() ?
                                    std::string() :
                                    "  subsection Nearly incompressible neo-Hookean\n"
@@ -81,10 +87,22 @@ namespace
       d -= K_v;
       return d.l2_norm() / K_v.l2_norm();
     }();
+    // A plastic law is checked where it flows (the consistent tangent).
+    const types::global_dof_index points =
+      body.get_dof_handler().get_triangulation().n_global_active_cells() *
+      GeometryInfo<dim>::vertices_per_cell;
+    const std::string flow =
+      law != "J2 plasticity" ?
+        "" :
+        response.plastic_points() == points ?
+        ", every point flowing" :
+        ", " + std::to_string(response.plastic_points()) + " of " +
+          std::to_string(points) + " points flowing";
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << dim << "D, " << law
                 << (volume_ratio.empty() ? "" : " (volume ratio: " + volume_ratio + ")")
                 << (quadrature == "Gauss" ? "" : " (" + quadrature + " points)")
+                << (kinematics == "finite strain" ? "" : " (" + kinematics + ", B-bar" + flow + ")")
                 << ": K_T v against central differences: "
                 << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
     if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -113,4 +131,6 @@ main(int argc, char *argv[])
     }
   check<2>("nearly incompressible neo-Hookean", "point", "Gauss-Lobatto");
   check<3>("nearly incompressible neo-Hookean", "point", "Gauss-Lobatto");
+  check<2>("J2 plasticity", "", "Gauss", "small strain");
+  check<3>("J2 plasticity", "", "Gauss", "small strain");
 }

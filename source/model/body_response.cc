@@ -90,7 +90,8 @@ namespace FrictionalContact
                         0.5 * symmetrize(transpose(gradient) * gradient);
             const double jacobian = scratch.jacobian[q] =
               determinant(scratch.deformation_gradient[q]);
-            scratch.smallest_jacobian.keep(jacobian, cell->center());
+            if (jacobian < scratch.smallest_jacobian.value)
+              scratch.smallest_jacobian.keep(jacobian, cell->center());
           }
         else
           {

@@ -25,56 +25,15 @@ namespace FrictionalContact
     }
 
 
-    /// T_b[c][m][d] = sum_n C[c][m][d][n] (G_b)_n: a fourth-order tensor
-    /// against the gradient G_b of each vertex's shape function.
-    template <int dim>
-    std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell>
-    against_gradients(const double (&C)[dim][dim][dim][dim],
-                      const std::vector<Tensor<1, dim>> &G)
-    {
-      std::array<Tensor<3, dim>, GeometryInfo<dim>::vertices_per_cell> T;
-      for (unsigned int b = 0; b < G.size(); ++b)
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int m = 0; m < dim; ++m)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                double sum = 0;
-                for (unsigned int n = 0; n < dim; ++n)
-                  sum += C[c][m][d][n] * G[b][n];
-                T[b][c][m][d] = sum;
-              }
-      return T;
-    }
-
-
-
-    /// Adds JxW entry(a, c, b, d) at (dof[a][c], dof[b][d]) of @p matrix,
-    /// in its lower triangle (dof (a, c): component c at vertex a).
-    template <int dim, typename Entry>
+    /// Makes a cell matrix symmetric, the mean of it and its transpose
+    /// (its terms are symmetric after the sum over the points, up to
+    /// round-off).
     void
-    add_lower_triangle(const std::vector<std::array<unsigned int, dim>> &dof,
-                       const double                                      JxW,
-                       const Entry                                      &entry,
-                       FullMatrix<double>                               &matrix)
-    {
-      for (unsigned int a = 0; a < dof.size(); ++a)
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int b = 0; b < dof.size(); ++b)
-            for (unsigned int d = 0; d < dim; ++d)
-              if (dof[b][d] <= dof[a][c])
-                matrix(dof[a][c], dof[b][d]) += entry(a, c, b, d) * JxW;
-    }
-
-
-
-    /// Fills the upper triangle of a symmetric matrix of which only the
-    /// lower one was assembled.
-    void
-    copy_lower_to_upper(FullMatrix<double> &matrix)
+    make_symmetric(FullMatrix<double> &matrix)
     {
       for (unsigned int i = 0; i < matrix.m(); ++i)
         for (unsigned int j = i + 1; j < matrix.n(); ++j)
-          matrix(i, j) = matrix(j, i);
+          matrix(i, j) = matrix(j, i) = 0.5 * (matrix(i, j) + matrix(j, i));
     }
   } // namespace
 
@@ -97,7 +56,10 @@ namespace FrictionalContact
     const auto        &div_bar    = scratch.mean_divergence;
     scratch.force                 = 0;
     if (with_tangent)
-      scratch.matrix = 0;
+      {
+        scratch.matrix = 0;
+        scratch.contraction.reinit(scratch.fe_values().n_quadrature_points);
+      }
     double C[dim][dim][dim][dim];
     for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
       {
@@ -125,35 +87,33 @@ namespace FrictionalContact
                                 (mean_dilatation || d != n ?
                                    0. :
                                    r.stress_by_volumetric_strain[c][m]);
-        // T_b[c][m][d] = sum_n C[c][m][d][n] dN_b/dx_n.
-        const auto T = against_gradients<dim>(C, G);
+        scratch.contraction.add_point(q, JxW, G, C);
+        if (!mean_dilatation)
+          continue;
         double coupling[GeometryInfo<dim>::vertices_per_cell][dim];
         double volumetric[GeometryInfo<dim>::vertices_per_cell][dim];
-        if (mean_dilatation)
-          for (unsigned int a = 0; a < n_vertices; ++a)
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                coupling[a][c]   = against_row(G[a], r.stress_by_volumetric_strain, c);
-                volumetric[a][c] = against_row(G[a], r.volumetric_stress_by_strain, c) +
-                                   r.volumetric_stress_by_volumetric_strain *
-                                     div_bar[dof[a][c]];
-              }
-        add_lower_triangle<dim>(
-          dof,
-          JxW,
-          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
-            double k = 0;
-            for (unsigned int m = 0; m < dim; ++m)
-              k += G[a][m] * T[b][c][m][d];
-            if (mean_dilatation)
-              k += coupling[a][c] * div_bar[dof[b][d]] +
-                   (div_bar[dof[a][c]] - G[a][c]) * volumetric[b][d];
-            return k;
-          },
-          scratch.matrix);
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              coupling[a][c]   = against_row(G[a], r.stress_by_volumetric_strain, c);
+              volumetric[a][c] = against_row(G[a], r.volumetric_stress_by_strain, c) +
+                                 r.volumetric_stress_by_volumetric_strain *
+                                   div_bar[dof[a][c]];
+            }
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int b = 0; b < n_vertices; ++b)
+              for (unsigned int d = 0; d < dim; ++d)
+                scratch.matrix(dof[a][c], dof[b][d]) +=
+                  (coupling[a][c] * div_bar[dof[b][d]] +
+                   (div_bar[dof[a][c]] - G[a][c]) * volumetric[b][d]) *
+                  JxW;
       }
     if (with_tangent)
-      copy_lower_to_upper(scratch.matrix);
+      {
+        scratch.contraction.add_to(dof, scratch.matrix);
+        make_symmetric(scratch.matrix);
+      }
   }
 
 
@@ -178,7 +138,10 @@ namespace FrictionalContact
     const bool         pointwise  = scratch.volume_ratio == VolumeRatio::point;
     scratch.force                 = 0;
     if (with_tangent)
-      scratch.matrix = 0;
+      {
+        scratch.matrix = 0;
+        scratch.contraction.reinit(scratch.fe_values().n_quadrature_points);
+      }
     // At most the 3^dim Gauss-Lobatto points; rows of h and g: one per
     // point for the point's volume ratio, one for the cell's mean.
     constexpr unsigned int max_points = dim == 2 ? 9 : 27;
@@ -219,16 +182,17 @@ namespace FrictionalContact
           }
         // The first elasticity tensor A = dP/dF: A_cJdL = F_cI C_IJKL F_dK +
         // delta_cd S_JL, with C the law's dS/dE (its volumetric part
-        // c1 (x) I); then T_b[c][J][d] = A_cJdL dN_b/dX_L, and the entry of
-        // (a, c), (b, d) is dN_a/dX_J T_b[c][J][d].
+        // c1 (x) I); the entry of (a, c), (b, d) is
+        // dN_a/dX_J A_cJdL dN_b/dX_L (GradientContraction).
+        const Tensor<2, dim> volumetric_part =
+          averages ? Tensor<2, dim>() : Tensor<2, dim>(r.stress_by_volumetric_strain);
         double CF[dim][dim][dim][dim]; // CF[I][J][d][L] = C_IJKL F_dK
         for (unsigned int I = 0; I < dim; ++I)
           for (unsigned int J = 0; J < dim; ++J)
             for (unsigned int d = 0; d < dim; ++d)
               for (unsigned int L = 0; L < dim; ++L)
                 {
-                  double sum =
-                    averages ? 0. : r.stress_by_volumetric_strain[I][J] * F[d][L];
+                  double sum = volumetric_part[I][J] * F[d][L];
                   for (unsigned int K = 0; K < dim; ++K)
                     sum += r.stress_by_strain[I][J][K][L] * F[d][K];
                   CF[I][J][d][L] = sum;
@@ -244,20 +208,13 @@ namespace FrictionalContact
                     sum += F[c][I] * CF[I][J][d][L];
                   A[c][J][d][L] = sum;
                 }
-        const auto T = against_gradients<dim>(A, G);
-        add_lower_triangle<dim>(
-          dof,
-          JxW,
-          [&](const unsigned int a, const unsigned int c, const unsigned int b, const unsigned int d) {
-            double k = 0;
-            for (unsigned int J = 0; J < dim; ++J)
-              k += G[a][J] * T[b][c][J][d];
-            return k;
-          },
-          scratch.matrix);
+        scratch.contraction.add_point(q, JxW, G, A);
       }
     if (with_tangent)
-      copy_lower_to_upper(scratch.matrix);
+      {
+        scratch.contraction.add_to(dof, scratch.matrix);
+        make_symmetric(scratch.matrix);
+      }
     if (with_tangent && averages)
       for (unsigned int row = 0; row < n_rows; ++row)
         for (unsigned int a = 0; a < n_vertices; ++a)

@@ -7,6 +7,7 @@
 
 #include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/model/cell_matrix_positions.h>
+#include <frictional_contact/model/gradient_contraction.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/quadrature_history.h>
@@ -183,6 +184,8 @@ namespace FrictionalContact
       std::vector<Tensor<2, dim>>              deformation_gradient;
       std::vector<double>                      jacobian;
       PlacedMinimum<dim>                       smallest_jacobian;
+      /// The cell matrix of the points' tangents, formed as one product.
+      GradientContraction<dim>                 contraction;
       FullMatrix<double>                       matrix;
       dealii::Vector<double>                   force;
     };
