@@ -90,6 +90,7 @@ namespace FrictionalContact
                         0.5 * symmetrize(transpose(gradient) * gradient);
             const double jacobian = scratch.jacobian[q] =
               determinant(scratch.deformation_gradient[q]);
+            // (The test spares computing the centre at every point.)
             if (jacobian < scratch.smallest_jacobian.value)
               scratch.smallest_jacobian.keep(jacobian, cell->center());
           }

@@ -25,9 +25,10 @@ namespace FrictionalContact
     }
 
 
-    /// Makes a cell matrix symmetric, the mean of it and its transpose
-    /// (its terms are symmetric after the sum over the points, up to
-    /// round-off).
+    /// Makes a cell matrix symmetric, the mean of it and its transpose: at
+    /// each point the terms sum to B_i : D : B_j (B-bar: with the cell's
+    /// mean divergence), symmetric where the law's D has the major
+    /// symmetry, which its terms apart do not have.
     void
     make_symmetric(FullMatrix<double> &matrix)
     {
@@ -241,8 +242,8 @@ namespace FrictionalContact
                        "(<Loading/On failure> = cut increment)");
   }
 
-  // Each member apart: body_response.cc instantiates the class, and a unity
-  // build may put both files in one translation unit.
+  // Each member apart: body_response.cc instantiates the class (a class
+  // instantiation here would define its other members twice).
   template void
   BodyResponse<2>::cell_force_and_tangent(const bool,
                                            const bool,

@@ -15,6 +15,7 @@ namespace FrictionalContact
       }
     if (product.m() != n_vertices)
       product.reinit(n_vertices, columns, true);
+    n_added = 0;
   }
 
 
@@ -26,6 +27,7 @@ namespace FrictionalContact
                                       const std::vector<Tensor<1, dim>> &G,
                                       const double (&A)[dim][dim][dim][dim])
   {
+    ++n_added;
     // The gradients by component, each a row over the vertices.
     double by_component[dim][n_vertices];
     for (unsigned int b = 0; b < n_vertices; ++b)
@@ -56,6 +58,7 @@ namespace FrictionalContact
   GradientContraction<dim>::add_to(const std::vector<std::array<unsigned int, dim>> &dof,
                                    FullMatrix<double> &matrix)
   {
+    AssertDimension(n_added * dim, weighted_gradients.m());
     weighted_gradients.Tmmult(product, gradients_through_tensor);
     for (unsigned int a = 0; a < n_vertices; ++a)
       for (unsigned int c = 0; c < dim; ++c)

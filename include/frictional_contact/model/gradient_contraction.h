@@ -20,7 +20,8 @@ namespace FrictionalContact
    * sum_L A_q[c][J][d][L] dN_b/dX_L, and add_to() forms the first's
    * transpose times the second (FullMatrix::Tmmult, which takes BLAS's
    * gemm at these sizes). Summing the entries per point and entry instead
-   * took most of a 3D finite-strain solve (doc/performance.md).
+   * took most of a 3D finite-strain solve (doc/performance.md, "Finite
+   * strain against small strain").
    * Owns the two matrices and the product.
    */
   template <int dim>
@@ -29,7 +30,8 @@ namespace FrictionalContact
   public:
     static constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
-    /// Starts a cell of @p n_points points.
+    /// Starts a cell of @p n_points points, each of which add_point() must
+    /// add before add_to() (the rows are not zeroed).
     void
     reinit(const unsigned int n_points);
 
@@ -55,5 +57,7 @@ namespace FrictionalContact
     FullMatrix<double> gradients_through_tensor;
     /// K_(a,c),(b,d) in row a, column (c dim + d) n_vertices + b.
     FullMatrix<double> product;
+    /// The points added since reinit().
+    unsigned int n_added = 0;
   };
 } // namespace FrictionalContact
