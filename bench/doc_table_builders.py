@@ -271,12 +271,19 @@ def step42(root):
                     body)
 
 
+def latest_by_scene(root, name, variant):
+    """The last row of each scene and each value of its column @p variant
+    in the CSV @p name: {scene: {variant: row}}, in the order first met."""
+    latest = {}
+    for r in rows(root, name):
+        latest.setdefault(r["scene"], {})[r[variant]] = r
+    return latest
+
+
 def linear_speed(root):
     """bench/linear_speed.py: linear elastic scenes with two builds, the
     last pair of rows of each scene."""
-    latest = {}
-    for r in rows(root, "linear-speed.csv"):
-        latest.setdefault(r["scene"], {})[r["version"]] = r
+    latest = latest_by_scene(root, "linear-speed.csv", "version")
     body = []
     for scene, versions in latest.items():
         for version, r in versions.items():
@@ -291,9 +298,7 @@ def finite_strain(root):
     """bench/finite_strain.py: each scene's last rows, small and finite
     strain (and finite strain with a pair's geometry at every Newton
     iterate)."""
-    latest = {}
-    for r in rows(root, "finite-strain.csv"):
-        latest.setdefault(r["scene"], {})[r["kinematics"]] = r
+    latest = latest_by_scene(root, "finite-strain.csv", "kinematics")
     body = []
     for scene, variants in latest.items():
         for kinematics, r in variants.items():
@@ -307,9 +312,7 @@ def finite_strain(root):
 def extrapolated_start(root):
     """bench/extrapolated_start.py: each scene's last pair of rows, with
     the time of the extrapolated start against the start from no motion."""
-    latest = {}
-    for r in rows(root, "extrapolated-start.csv"):
-        latest.setdefault(r["scene"], {})[r["start"]] = r
+    latest = latest_by_scene(root, "extrapolated-start.csv", "start")
     body = []
     for scene, starts in latest.items():
         first = starts["no motion"]
