@@ -1,9 +1,11 @@
 // The increment driver alone, without a mesh: the times of the loading
 // history, the on-failure policy (abort, or cut the failing increment in
 // half up to Maximum cuts times in a row), and the increments that grow
-// after easy ones and shrink after hard ones, with a stand-in increment
-// that fails whenever it is longer than a given length and takes 10
-// iterations when longer than another.
+// after easy ones, shrink after hard ones and hold their length after
+// the others, with a stand-in increment that fails whenever it is longer
+// than a given length and takes 10 iterations when longer than another;
+// and that each increment is finished (its checkpoint written) with the
+// times after it settled.
 #include <deal.II/base/mpi.h>
 
 #include <frictional_contact/base/input.h>
@@ -18,12 +20,14 @@ using namespace FrictionalContact;
 namespace
 {
   /// Runs a driver on @p loading; increments longer than @p longest fail,
-  /// those longer than @p hard take 10 iterations, the others 2.
+  /// those longer than @p hard take 10 iterations, the others 2. With
+  /// @p show_finished, the number of increments as each was finished.
   void
   check(const std::string &title,
         const std::string &loading,
         const double       longest,
-        const double       hard = 1e10)
+        const double       hard          = 1e10,
+        const bool         show_finished = false)
   {
     ParameterHandler prm;
     IncrementDriver::declare_parameters(prm);
@@ -41,6 +45,7 @@ namespace
     IncrementDriver &driver = *made;
 
     std::vector<unsigned int> solved;
+    std::vector<std::size_t>  n_when_finished;
     std::ostringstream        messages;
     std::string               outcome = "finished";
     try
@@ -54,6 +59,9 @@ namespace
             solved.push_back(l);
             return length > hard * (1 + 1e-12) ? 10u : 2u;
           },
+          [&](const unsigned int) {
+            n_when_finished.push_back(driver.times().size());
+          },
           messages);
       }
     catch (const SolverError &error)
@@ -63,13 +71,15 @@ namespace
     std::cout << title << ": " << outcome << "; times";
     for (const double t : driver.times())
       std::cout << ' ' << t;
-    unsigned int cut_lines = 0, grown_lines = 0, halved_lines = 0;
+    unsigned int cut_lines = 0, grown_lines = 0, halved_lines = 0,
+                 held_lines = 0;
     std::istringstream lines(messages.str());
     for (std::string line; std::getline(lines, line);)
       {
         cut_lines += line.rfind("Cut in half", 0) == 0;
         grown_lines += line.rfind("Grown", 0) == 0;
         halved_lines += line.rfind("Halved ahead", 0) == 0;
+        held_lines += line.rfind("Held at the last length", 0) == 0;
       }
     std::cout << "; " << solved.size() << " solved, " << cut_lines
               << " cut lines";
@@ -77,6 +87,14 @@ namespace
       std::cout << ", " << grown_lines << " grown lines";
     if (halved_lines > 0)
       std::cout << ", " << halved_lines << " halved lines";
+    if (held_lines > 0)
+      std::cout << ", " << held_lines << " held lines";
+    if (show_finished)
+      {
+        std::cout << "; increments when each was finished:";
+        for (const std::size_t n : n_when_finished)
+          std::cout << ' ' << n;
+      }
     std::cout << std::endl;
   }
 } // namespace
@@ -140,6 +158,19 @@ main(int argc, char *argv[])
         "set Grow past increment times = true",
         10,
         0.3);
+  // The increments after a halved one keep its length while neither easy
+  // nor hard (2 iterations, no Easy increment iterations): 0 to 0.5 is
+  // hard, 0.5 to 0.75 is not, so 1 to 1.5 and 1.5 to 2 are held to 0.25;
+  // each increment is finished with the times after it settled.
+  check("hard increments hold the shortened length",
+        "set End time = 2\nset Number of increments = 4\n"
+        "set Hard increment iterations = 5",
+        10,
+        0.3,
+        true);
+  // Held evenly: 0.3 to 0.65 is split in two halves of 0.175, no sliver.
+  check("held evenly",
+        "set Increment times = 0.3, 0.65\nset Hard increment iterations = 5", 10);
   check("hard not above easy",
         "set Hard increment iterations = 2\nset Easy increment iterations = 2", 1);
 }

@@ -2,6 +2,7 @@
 #include <frictional_contact/driver/increment_driver.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace FrictionalContact
 {
@@ -48,9 +49,11 @@ namespace FrictionalContact
                       "halved before it is tried, down to the loading "
                       "history's own increment halved Maximum cuts times: "
                       "shorter increments where the solve grew hard, before "
-                      "one fails (with Easy increment iterations, they grow "
-                      "back where it is easy again). Must exceed Easy "
-                      "increment iterations. 0: never.");
+                      "one fails. The increments after it are held to the "
+                      "last one's length (split evenly where longer) until "
+                      "an easy one (Easy increment iterations) lets them "
+                      "grow back. Must exceed Easy increment iterations. 0: "
+                      "never.");
     prm.leave_subsection();
   }
 
@@ -82,6 +85,7 @@ namespace FrictionalContact
   void
   IncrementDriver::run(const unsigned int first,
                        const Increment   &increment,
+                       const Finished    &finished,
                        std::ostream      &out)
   {
     unsigned int cuts = 0;
@@ -90,21 +94,8 @@ namespace FrictionalContact
         {
           const unsigned int iterations = increment(l);
           cuts                          = 0;
-          // The time a merge would take away, if one of the history's.
-          const std::string skipped =
-            l + 1 < end_times.size() && planned(end_times[l + 1]) ?
-              "Grown past t = " + Input::to_text(end_times[l + 1]) :
-              "Grown back";
-          if (easy_iterations > 0 && iterations <= easy_iterations && grow_after(l))
-            out << skipped
-                << " (increment " << l + 1 << " took " << iterations
-                << " iterations), now " << end_times.size() << " increments"
-                << std::endl;
-          else if (hard_iterations > 0 && iterations > hard_iterations &&
-                   halve_after(l))
-            out << "Halved ahead (increment " << l + 1 << " took "
-                << iterations << " iterations), now " << end_times.size()
-                << " increments" << std::endl;
+          plan_after(l, iterations, out);
+          finished(l);
         }
       catch (const SolverError &error)
         {
@@ -119,6 +110,32 @@ namespace FrictionalContact
               << " increments, because " << error.what() << std::endl;
           --l;
         }
+  }
+
+
+
+  void
+  IncrementDriver::plan_after(const unsigned int l,
+                              const unsigned int iterations,
+                              std::ostream      &out)
+  {
+    const bool easy = easy_iterations > 0 && iterations <= easy_iterations;
+    const bool hard = hard_iterations > 0 && iterations > hard_iterations;
+    // The time a merge would take away, if one of the history's.
+    const std::string skipped =
+      l + 1 < end_times.size() && planned(end_times[l + 1]) ?
+        "Grown past t = " + Input::to_text(end_times[l + 1]) :
+        "Grown back";
+    const std::string why = " (increment " + std::to_string(l + 1) + " took " +
+                            std::to_string(iterations) + " iterations), now ";
+    if (easy && grow_after(l))
+      out << skipped << why << end_times.size() << " increments" << std::endl;
+    else if (hard && halve_after(l))
+      out << "Halved ahead" << why << end_times.size() << " increments"
+          << std::endl;
+    else if (hard_iterations > 0 && !easy && hold_after(l))
+      out << "Held at the last length" << why << end_times.size()
+          << " increments" << std::endl;
   }
 
 
@@ -151,6 +168,24 @@ namespace FrictionalContact
     if (half < (*planned_end - planned_start) / (1u << maximum_cuts) * (1 - 1e-12))
       return false;
     end_times.insert(end_times.begin() + l + 1, end_times[l] + half);
+    return true;
+  }
+
+
+
+  bool
+  IncrementDriver::hold_after(const unsigned int l)
+  {
+    if (l + 1 >= end_times.size())
+      return false;
+    const double length      = end_times[l] - start_time(l);
+    const double next_length = end_times[l + 1] - end_times[l];
+    if (next_length <= length * (1 + 1e-12))
+      return false;
+    // Into pieces of equal length, none longer than the last increment.
+    const double pieces = std::ceil(next_length / length * (1 - 1e-12));
+    end_times.insert(end_times.begin() + l + 1,
+                     end_times[l] + next_length / pieces);
     return true;
   }
 

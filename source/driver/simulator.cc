@@ -181,6 +181,7 @@ namespace FrictionalContact
         driver.run(
           first_increment,
           [&](const unsigned int l) { return solve_increment(l); },
+          [&](const unsigned int l) { finish_increment(l); },
           pcout.is_active() ? pcout.get_stream() : nowhere);
       }
     catch (const StopRequested &stop)
@@ -391,13 +392,24 @@ namespace FrictionalContact
       });
     postprocessors.execute(result);
     n_finished = l + 1;
-    if (postprocessors.checkpoint_due(l + 1, n))
-      save_checkpoint(l);
+    return outcome.statistics.iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_increment(const unsigned int l)
+  {
+    if (postprocessors.checkpoint_due(l + 1, driver.times().size()))
+      {
+        TimerOutput::Scope scope(*timer, "Output");
+        save_checkpoint(l);
+      }
     // A signal stops the run here, once the increment is written; an
     // urgent one stops the contact solver earlier.
     if (const int signal = RunControl::stop_signal(mpi_communicator))
       throw StopRequested(signal);
-    return outcome.statistics.iterations;
   }
 
 

@@ -19,8 +19,9 @@ namespace FrictionalContact
    * fails (abort the run, or retry it as two halves, up to a number of cuts
    * in a row), for one that converged easily (the next two increments
    * that cuts made, or any two if asked, merged into one) and for one that
-   * converged only in many iterations (the next one halved). Owns the
-   * subsection "Loading".
+   * converged only in many iterations (the next one halved, and those
+   * after it held to that length until one is easy). Owns the subsection
+   * "Loading".
    * It knows nothing of meshes or solvers: an increment is a function of
    * its number, so that the policy can be tested alone.
    */
@@ -37,6 +38,10 @@ namespace FrictionalContact
     /// fails.
     using Increment = std::function<unsigned int(const unsigned int l)>;
 
+    /// Called after increment l once the times after it are settled (the
+    /// policy applied), so that a checkpoint written there holds them.
+    using Finished = std::function<void(const unsigned int l)>;
+
     /**
      * Runs increments @p first, first + 1, ... to the end. An increment that
      * throws a SolverError is retried as two halves, if the policy allows it
@@ -46,10 +51,15 @@ namespace FrictionalContact
      * (or any two, with <Grow past increment times>) are merged into one
      * (one line on @p out): the increment grows. After one that took more
      * than <Hard increment iterations>, the next is halved (one line): the
-     * increment shrinks before an increment fails.
+     * increment shrinks before an increment fails. With that rule on, an
+     * increment neither easy nor hard holds the next one to its own length
+     * (one line where it splits it). Then @p finished(l).
      */
     void
-    run(const unsigned int first, const Increment &increment, std::ostream &out);
+    run(const unsigned int first,
+        const Increment   &increment,
+        const Finished    &finished,
+        std::ostream      &out);
 
     /// The end times of the increments: those of the loading history, with
     /// halves inserted where an increment failed and was cut.
@@ -80,6 +90,14 @@ namespace FrictionalContact
     }
 
   private:
+    /// Applies the policy to the increments after increment @p l, solved in
+    /// @p iterations: grows, halves or holds the next (one line on @p out
+    /// if it did).
+    void
+    plan_after(const unsigned int l,
+               const unsigned int iterations,
+               std::ostream      &out);
+
     /// Merges increments @p l + 1 and @p l + 2 if a cut made the end time of
     /// the first (it is not one of the loading history's), or always with
     /// <Grow past increment times>; never past the last time. Returns
@@ -92,6 +110,11 @@ namespace FrictionalContact
     /// there is none. Returns whether it did.
     bool
     halve_after(const unsigned int l);
+
+    /// Splits increment @p l + 1 evenly into pieces no longer than
+    /// increment @p l, if it is longer. Returns whether it did.
+    bool
+    hold_after(const unsigned int l);
 
     /// Whether @p t is one of the loading history's own end times.
     bool

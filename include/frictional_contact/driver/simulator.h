@@ -63,6 +63,11 @@ namespace FrictionalContact
     unsigned int
     solve_increment(const unsigned int l);
 
+    /// After increment @p l, the times after it settled: its checkpoint
+    /// (if due), then a stop if a signal came.
+    void
+    finish_increment(const unsigned int l);
+
     /// Solves increment @p l on the current mesh from the state; throws a
     /// SolverError (after the postprocessors of a failed increment) if the
     /// contact solve does not converge.
