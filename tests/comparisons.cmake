@@ -559,6 +559,16 @@ add_script_test(restart_plastic restart_plastic 2)
 # uniform field is round-off, so which cells it refines is not compared.
 add_scene_check(j2_uniaxial_adaptive 1 exact
   check_uniaxial.py OUTPUT --tolerance 1e-10)
+# Each increment's first Newton step is linearised at the last state, not
+# at the moved top face alone, which flowed the thin cells beside it: at
+# most 20 Newton steps per increment after the mesh's change (13 measured;
+# 29 and 30 at the unloading and the reversed yield before).
+add_test(NAME j2_uniaxial_adaptive.newton_per_increment
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
+    ${CMAKE_CURRENT_BINARY_DIR}/j2_uniaxial_adaptive/output-j2_uniaxial_adaptive/statistics
+    --rows 1-12 --at-most "Contact solver iterations" 20)
+set_tests_properties(j2_uniaxial_adaptive.newton_per_increment PROPERTIES
+  FIXTURES_REQUIRED j2_uniaxial_adaptive)
 
 # The residual impression of step-42's indentation, pressed and lifted, on
 # 4, 8 and 16 cells per edge: a permanent dent that converges with the

@@ -70,9 +70,14 @@ namespace
     v.compress(VectorOperation::insert);
     body.get_constraints().set_zero(v);
 
-    // K_T(u) v from the response at u (N(du) = f(u + du) - f(u)).
-    IncrementResponse<dim> response(model, nullptr, u);
-    Vector K_v = body.make_vector(), plus = body.make_vector(), minus = body.make_vector();
+    // K_T(u) v from the response at u (N(du) = f(u + du) - f(u)): started
+    // at u with no lifting, then evaluated there with the tangent, so that
+    // N is the law's and not its linearisation.
+    const Vector           no_motion = body.make_vector();
+    Vector                 K_v = body.make_vector(), plus = body.make_vector(),
+           minus = body.make_vector();
+    IncrementResponse<dim> response(model, nullptr, u, no_motion);
+    response.internal_force_change(no_motion, plus, true);
     body.stiffness().vmult(K_v, v);
     const double h = 1e-6;
     Vector step = v;

@@ -168,6 +168,10 @@ main(int argc, char *argv[])
         10,
         0.3,
         true);
+  // A hard increment halves the next as held to its own length: 0 to 0.25
+  // is hard, so 0.25 to 1 is held to 0.25 and halved to 0.125.
+  check("halved from the hard increment's length",
+        "set Increment times = 0.25, 1\nset Hard increment iterations = 5", 10, 0.2);
   // Held evenly: 0.3 to 0.65 is split in two halves of 0.175, no sliver.
   check("held evenly",
         "set Increment times = 0.3, 0.65\nset Hard increment iterations = 5", 10);

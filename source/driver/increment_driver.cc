@@ -46,7 +46,7 @@ namespace FrictionalContact
                       Patterns::Integer(0),
                       "After an increment whose contact solve took more "
                       "than this many iterations, the next increment is "
-                      "halved before it is tried, down to the loading "
+                      "held to its length and halved before it is tried, down to the loading "
                       "history's own increment halved Maximum cuts times: "
                       "shorter increments where the solve grew hard, before "
                       "one fails. The increments after it are held to the "
@@ -130,12 +130,17 @@ namespace FrictionalContact
                             std::to_string(iterations) + " iterations), now ";
     if (easy && grow_after(l))
       out << skipped << why << end_times.size() << " increments" << std::endl;
-    else if (hard && halve_after(l))
-      out << "Halved ahead" << why << end_times.size() << " increments"
-          << std::endl;
-    else if (hard_iterations > 0 && !easy && hold_after(l))
-      out << "Held at the last length" << why << end_times.size()
-          << " increments" << std::endl;
+    else if (hard_iterations > 0 && !easy)
+      {
+        // Held to this increment's length, and halved after a hard one.
+        const bool held = hold_after(l);
+        if (hard && halve_after(l))
+          out << "Halved ahead" << why << end_times.size() << " increments"
+              << std::endl;
+        else if (held)
+          out << "Held at the last length" << why << end_times.size()
+              << " increments" << std::endl;
+      }
   }
 
 

@@ -6,7 +6,7 @@ namespace FrictionalContact
   IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
                                             MortarBasis<dim> *mortar,
                                             const Vector     &start,
-                                            const bool        linear)
+                                            const Vector     &lifting)
     : model(model)
     , mortar(mortar)
     , start(start)
@@ -15,33 +15,6 @@ namespace FrictionalContact
     , u_ghosted(model.get_body().make_ghosted_vector())
     , force(force_at_start)
     , du_in_u(force_at_start)
-    , linear(linear)
-  {}
-
-
-
-  template <int dim>
-  IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
-                                            MortarBasis<dim> *mortar,
-                                            const Vector     &start)
-    : IncrementResponse(model, mortar, start, false)
-  {
-    du_in_u = 0;
-    evaluate(du_in_u, true);
-    if (mortar != nullptr)
-      // The entries of the tangent at the start, for the solvers' set-up.
-      mortar->update_tangent(model.get_body().stiffness().matrix("contact pairs"), true);
-    force_at_start = force;
-  }
-
-
-
-  template <int dim>
-  IncrementResponse<dim>::IncrementResponse(Model<dim>       &model,
-                                            MortarBasis<dim> *mortar,
-                                            const Vector     &start,
-                                            const Vector     &lifting)
-    : IncrementResponse(model, mortar, start, true)
   {
     // f_int and the tangent at u^l = u_0 - lifting; the derivative along
     // the lifting by a difference quotient over a small part of it.

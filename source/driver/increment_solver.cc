@@ -160,12 +160,10 @@ namespace FrictionalContact
     if (model.nonlinear())
       {
         TimerOutput::Scope scope(timer, "Assembly");
-        // At finite strain the first Newton step is linearised at u^l
-        // (the moved boundary alone squashes the cells beside it).
+        // The first Newton step is linearised at u^l (the moved boundary
+        // alone squashes the cells beside it, and flows them).
         outcome.response =
-          model.get_materials().any_finite_strain() ?
-            std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start, lifting) :
-            std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start);
+          std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start, lifting);
         load = outcome.response->start_force();
       }
     else

@@ -50,10 +50,11 @@ namespace FrictionalContact
      * <Easy increment iterations>, the next two increments that cuts made
      * (or any two, with <Grow past increment times>) are merged into one
      * (one line on @p out): the increment grows. After one that took more
-     * than <Hard increment iterations>, the next is halved (one line): the
-     * increment shrinks before an increment fails. With that rule on, an
-     * increment neither easy nor hard holds the next one to its own length
-     * (one line where it splits it). Then @p finished(l).
+     * than <Hard increment iterations>, the next is held to its length
+     * and halved (one line): the increment shrinks before an increment
+     * fails. With that rule on, an increment that is not easy holds the
+     * next one to its own length (one line where it splits it). Then
+     * @p finished(l).
      */
     void
     run(const unsigned int first,
