@@ -25,8 +25,8 @@ between its Gauss points (det F = 0 there) and the solve stalls, before
 t = 2, unless the law is evaluated at the Gauss-Lobatto points
 (doc/performance.md, "The 3D ironing at scale").
 With --hard-iterations M, an increment whose solve took more than M
-Newton steps has the next one halved (<Loading/Hard increment
-iterations>); with --folder, the runs are made there (and kept: their
+Newton steps has the next one halved, and the increments after it keep
+that length (<Loading/Hard increment iterations>); with --folder, the runs are made there (and kept: their
 statistics files show a long run's progress) instead of in a temporary
 folder.
 
