@@ -46,8 +46,9 @@ namespace FrictionalContact
                       Patterns::Integer(0),
                       "After an increment whose contact solve took more "
                       "than this many iterations, the next increment is "
-                      "held to its length and halved before it is tried, down to the loading "
-                      "history's own increment halved Maximum cuts times: "
+                      "held to its length and halved before it is tried, "
+                      "down to the loading history's own increment halved "
+                      "Maximum cuts times: "
                       "shorter increments where the solve grew hard, before "
                       "one fails. The increments after it are held to the "
                       "last one's length (split evenly where longer) until "
@@ -121,26 +122,31 @@ namespace FrictionalContact
   {
     const bool easy = easy_iterations > 0 && iterations <= easy_iterations;
     const bool hard = hard_iterations > 0 && iterations > hard_iterations;
-    // The time a merge would take away, if one of the history's.
-    const std::string skipped =
-      l + 1 < end_times.size() && planned(end_times[l + 1]) ?
-        "Grown past t = " + Input::to_text(end_times[l + 1]) :
-        "Grown back";
-    const std::string why = " (increment " + std::to_string(l + 1) + " took " +
-                            std::to_string(iterations) + " iterations), now ";
-    if (easy && grow_after(l))
-      out << skipped << why << end_times.size() << " increments" << std::endl;
-    else if (hard_iterations > 0 && !easy)
+    // The start of the line that says how the times changed, if they did.
+    std::string what;
+    if (easy)
+      {
+        // The time a merge would take away, if one of the history's.
+        const std::string skipped =
+          l + 1 < end_times.size() && planned(end_times[l + 1]) ?
+            "Grown past t = " + Input::to_text(end_times[l + 1]) :
+            "Grown back";
+        if (grow_after(l))
+          what = skipped;
+      }
+    else if (hard_iterations > 0)
       {
         // Held to this increment's length, and halved after a hard one.
         const bool held = hold_after(l);
         if (hard && halve_after(l))
-          out << "Halved ahead" << why << end_times.size() << " increments"
-              << std::endl;
+          what = "Halved ahead";
         else if (held)
-          out << "Held at the last length" << why << end_times.size()
-              << " increments" << std::endl;
+          what = "Held at the last length";
       }
+    if (!what.empty())
+      out << what << " (increment " << l + 1 << " took " << iterations
+          << " iterations), now " << end_times.size() << " increments"
+          << std::endl;
   }
 
 
