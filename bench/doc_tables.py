@@ -169,7 +169,23 @@ def ironing_fold(root):
     return text
 
 
+def process_start(root):
+    """The start of a process with the libraries in the linker's order and
+    in the order cmake/loader_order.cmake gives (doc/performance.md): the
+    last run of bench/process_start.py that timed both."""
+    table = rows(root, "process-start.csv")
+    for mine in reversed(table):
+        linker = [r for r in table if r["commit"] == mine["commit"]
+                  and int(r["needed_libraries"]) < int(mine["needed_libraries"])]
+        if linker:
+            old = linker[-1]
+            return (f"{float(old['cpu_s']):.2f} s of CPU to {float(mine['cpu_s']):.2f} s "
+                    f"(the median of {mine['repeat']} starts each, alternately)")
+    return "(bench/process_start.py has not timed both orders)"
+
+
 QUOTES = {
+    "process-start": process_start,
     "ironing-fold": ironing_fold,
     "step42-goals": step42_goals,
     "nearly-incompressible-errors": nearly_incompressible_errors,

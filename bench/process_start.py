@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""The start of a process of the program: the wall and CPU time of
+`contact --help` (the libraries loaded and bound, MPI initialised, every
+parameter declared), which every run and every test pays before it
+solves anything. Runs the given programs alternately, the median of
+--repeat runs each, in the environment of the tests (one process, no
+Open MPI daemon), and appends a row per program to
+doc/benchmarks/process-start.csv.
+
+Compare the build's program with one linked in the linker's own library
+order (a build configured with -DFRICTIONAL_CONTACT_LOADER_ORDER=OFF,
+cmake/loader_order.cmake):
+  bench/process_start.py --against other-build/contact
+
+usage: bench/process_start.py [--program build/contact] [--against PROGRAM]
+                              [--repeat 20] [--csv FILE]
+"""
+import argparse
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from doc_tables import append_rows, write_tables  # noqa: E402
+from runs import ENVIRONMENT, print_row  # noqa: E402
+
+COLUMNS = ["program", "needed_libraries", "repeat", "wall_s", "cpu_s", "commit"]
+# As the tests run the program (tests/CMakeLists.txt): no daemon for a
+# process started without mpirun.
+START_ENVIRONMENT = dict(ENVIRONMENT, OMPI_MCA_ess_singleton_isolated="1")
+
+
+def needed_libraries(program):
+    """How many libraries the program names itself (readelf)."""
+    dynamic = subprocess.run(["readelf", "-d", program], capture_output=True,
+                             text=True).stdout
+    return dynamic.count("(NEEDED)")
+
+
+def start(program):
+    """One start: (wall, CPU of the child) in seconds."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    begin = time.perf_counter()
+    subprocess.run([program, "--help"], stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, env=START_ENVIRONMENT, check=True)
+    wall = time.perf_counter() - begin
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter,
+                                     epilog=__doc__)
+    parser.add_argument("--program", default=os.path.join(ROOT, "build", "contact"))
+    parser.add_argument("--against", help="a second program, started alternately")
+    parser.add_argument("--repeat", type=int, default=20)
+    parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
+                                                      "process-start.csv"))
+    args = parser.parse_args()
+    programs = [os.path.abspath(p) for p in [args.program, args.against] if p]
+    for p in programs:
+        if not os.access(p, os.X_OK):
+            sys.exit(f"{p}: no such program; build it first (scripts/setup.sh)")
+    times = {p: [] for p in programs}
+    for _ in range(args.repeat):
+        for p in programs:
+            times[p].append(start(p))
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    rows = []
+    for p in programs:
+        row = {"program": os.path.relpath(p, ROOT) if p.startswith(ROOT) else p,
+               "needed_libraries": needed_libraries(p), "repeat": args.repeat,
+               "wall_s": round(statistics.median(t[0] for t in times[p]), 3),
+               "cpu_s": round(statistics.median(t[1] for t in times[p]), 3),
+               "commit": commit}
+        print_row(row, COLUMNS)
+        rows.append(row)
+    append_rows(args.csv, COLUMNS, rows)
+    write_tables()
+
+
+if __name__ == "__main__":
+    main()
