@@ -416,6 +416,14 @@ function(contact_compare_statistics _name _setup_tests _a _b _tolerance)
       "Normal contact force" "Tangential contact force" --tolerance ${_tolerance})
   set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED "${_setup_tests}")
 endfunction()
+# <name>.same_forces: the contact forces of the run <test> (output folder
+# output-<name>) and of the run <reference test> (output-<reference>) to
+# 1e-8 relative to the largest force of each column.
+function(contact_same_forces _name _test _reference_test _reference)
+  contact_compare_statistics(${_name}.same_forces "${_test};${_reference_test}"
+    ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_name}/statistics
+    ${CMAKE_CURRENT_BINARY_DIR}/${_reference_test}/output-${_reference}/statistics 1e-8)
+endfunction()
 
 # A rigid tool from a surface mesh against the same punch as an elastic
 # block 1e6 times stiffer: the same forces to 1e-3 (measured 1.8e-4 with
@@ -480,21 +488,14 @@ foreach(_case "hertz_3d;.mpirun=2;.mpirun=2;.mpirun=2"
 endforeach()
 # Preconditioner = auto under a memory budget that only K matrix-free
 # meets: the multigrid's path, ML's forces.
-contact_compare_statistics(example2_ny4_memory_budget.same_forces
-  "example2_ny4_memory_budget.mpirun=2;example2_ny4.mpirun=2"
-  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4_memory_budget.mpirun=2/output-example2_ny4_memory_budget/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4.mpirun=2/output-example2_ny4/statistics 1e-8)
+contact_same_forces(example2_ny4_memory_budget example2_ny4_memory_budget.mpirun=2
+  example2_ny4.mpirun=2 example2_ny4)
 # B-bar bodies: the mixed solves with the V-cycle of the split's A
 # (FGMRES): Newton with friction, Kanno's method (against the Newton run
 # with ML), one elastic solve.
-contact_compare_statistics(extreme_nu_04999_newton_multigrid.same_forces
-  "extreme_nu_04999_newton_multigrid;extreme_nu_04999_newton"
-  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton_multigrid/output-extreme_nu_04999_newton_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton/output-extreme_nu_04999_newton/statistics 1e-8)
-contact_compare_statistics(example2_ny4_nu_04999_multigrid.same_forces
-  "example2_ny4_nu_04999_multigrid;extreme_nu_04999_newton"
-  ${CMAKE_CURRENT_BINARY_DIR}/example2_ny4_nu_04999_multigrid/output-example2_ny4_nu_04999_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/extreme_nu_04999_newton/output-extreme_nu_04999_newton/statistics 1e-8)
+foreach(_name extreme_nu_04999_newton_multigrid example2_ny4_nu_04999_multigrid)
+  contact_same_forces(${_name} ${_name} extreme_nu_04999_newton extreme_nu_04999_newton)
+endforeach()
 contact_compare_tables(lame_3d_multigrid.same_displacement
   "lame_3d_multigrid.mpirun=2;lame_3d.mpirun=2"
   ${CMAKE_CURRENT_BINARY_DIR}/lame_3d.mpirun=2/output-lame_3d/displacement-00001.csv
@@ -502,10 +503,8 @@ contact_compare_tables(lame_3d_multigrid.same_displacement
   --keys x,y,z --columns ux,uy,uz --tolerance 1e-8)
 # Two bodies (MortarPreconditioner; no matrix-free path with pairs): in 3D
 # against the ball on the plate as the scenes' test runs it on 2 ranks.
-contact_compare_statistics(sliding_pair_friction_multigrid.same_forces
-  "sliding_pair_friction_multigrid;sliding_pair_friction"
-  ${CMAKE_CURRENT_BINARY_DIR}/sliding_pair_friction_multigrid/output-sliding_pair_friction_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/sliding_pair_friction/output-sliding_pair_friction/statistics 1e-8)
+contact_same_forces(sliding_pair_friction_multigrid sliding_pair_friction_multigrid
+  sliding_pair_friction sliding_pair_friction)
 contact_compare_statistics(hertz_two_bodies_3d_multigrid.same_forces
   "hertz_two_bodies_3d_multigrid.mpirun=2;ball_on_plate_scene"
   ${CMAKE_CURRENT_BINARY_DIR}/hertz_two_bodies_3d_multigrid.mpirun=2/output-hertz_two_bodies_3d_multigrid/statistics
