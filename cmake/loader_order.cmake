@@ -6,8 +6,8 @@
 # symbols included. deal.II pulls in some 200 libraries (Trilinos,
 # OpenCASCADE, gmsh, BLAS, ...), and several with tens of thousands of such
 # references sat a hundred places down that order: binding took three
-# quarters of the start of `contact --help` (perf), about 0.45 s of CPU in
-# every process, which the test suite starts some thousand times.
+# quarters of the start of `contact --help` (perf), which is about half a
+# second of CPU in every process the test suite starts.
 #
 # frictional_contact_loader_order() names those libraries first, most
 # symbol relocations first (read from their dynamic sections with readelf
@@ -18,8 +18,9 @@
 option(FRICTIONAL_CONTACT_LOADER_ORDER
   "Name the libraries with the most symbol relocations first" ON)
 
-# deal.II and the libraries it loads, those with at least @p _minimum symbol relocations,
-# most first, into @p _result (half a second for some 200 libraries).
+# deal.II and the libraries it loads, those with at least @p _minimum
+# symbol relocations, most first, into @p _result (half a second for some
+# 200 libraries).
 function(frictional_contact_heavy_libraries _result _minimum)
   # The release library's file (Debian's package names its configuration
   # DEBUGRELEASE).

@@ -62,6 +62,6 @@ endforeach()
 # The 2D ironing scene's statistics on 2 ranks are what the 3D ironing test
 # compares with (ironing_3d.against_2d, comparisons.cmake).
 set_tests_properties(scenes/ironing_2d.mpirun=2 PROPERTIES FIXTURES_SETUP ironing_2d_scene)
-# The ball on the plate's on 2 ranks, what its run with the geometric
+# The ball on the plate's run on 2 ranks is what its run with the geometric
 # multigrid compares with (hertz_two_bodies_3d_multigrid.same_forces).
 set_tests_properties(scenes/ball_on_plate.mpirun=2 PROPERTIES FIXTURES_SETUP ball_on_plate_scene)
