@@ -41,6 +41,16 @@ if [ "$mode" = other-blas ]; then
     "${other%%:*}"/*) ;;
     *) echo "*** LD_LIBRARY_PATH=$other did not select the other BLAS"; exit 1 ;;
   esac
+  # With the reference BLAS, OpenBLAS must not load at all: a program or
+  # library that names it would bind the BLAS calls to it all the same.
+  case "$other" in
+    */blas:*)
+      if ldd "$1" | grep -q openblas; then
+        echo "*** OpenBLAS still loads with LD_LIBRARY_PATH=$other:" \
+          "$(ldd "$1" | grep openblas | awk '{print $1}' | tr '\n' ' ')(named by the program or a library it loads)"
+        exit 1
+      fi ;;
+  esac
 fi
 
 forward=()
