@@ -11,16 +11,24 @@ Compare the build's program with one linked in the linker's own library
 order (a build configured with -DFRICTIONAL_CONTACT_LOADER_ORDER=OFF,
 cmake/loader_order.cmake):
   bench/process_start.py --against other-build/contact
+With --bindings it also checks, under the system's BLAS and under
+LD_LIBRARY_PATH=--other-blas, that every symbol binds to the same
+definition in both programs but where all are weak (LD_DEBUG=bindings,
+nm), and fails naming those that do not.
 
 usage: bench/process_start.py [--program build/contact] [--against PROGRAM]
-                              [--repeat 20] [--csv FILE]
+                              [--repeat 20] [--csv FILE] [--bindings]
+                              [--other-blas DIRS]
 """
 import argparse
+import glob
 import os
+import re
 import resource
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -54,6 +62,54 @@ def start(program):
     return wall, cpu
 
 
+def bindings(program, library_path):
+    """{(the binding object, symbol): the object it binds to} of a start."""
+    with tempfile.TemporaryDirectory() as folder:
+        environment = dict(START_ENVIRONMENT, LD_DEBUG="bindings",
+                           LD_DEBUG_OUTPUT=os.path.join(folder, "bindings"))
+        if library_path:
+            environment["LD_LIBRARY_PATH"] = library_path
+        subprocess.run([program, "--help"], stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL, env=environment, check=True)
+        log = max(glob.glob(os.path.join(folder, "bindings*")), key=os.path.getsize)
+        found = {}
+        pattern = re.compile(r"binding file (\S+) \[0\] to (\S+) \[0\]: "
+                             r"normal symbol `([^'@]+)")
+        with open(log) as f:
+            for line in f:
+                match = pattern.search(line)
+                if match:
+                    source, target, symbol = match.groups()
+                    source = "the program" if source == program else source
+                    target = "the program" if target == program else target
+                    found[(source, symbol)] = (target, program if target == "the program"
+                                               else target)
+        return found
+
+
+def weak_in(library, symbol, tables={}):
+    """Whether @p library defines @p symbol weakly (nm)."""
+    if library not in tables:
+        listing = subprocess.run(["nm", "-D", "--defined-only", library],
+                                 capture_output=True, text=True).stdout
+        tables[library] = {f[2].split("@")[0]: f[1] for f in
+                           (line.split() for line in listing.splitlines()) if len(f) >= 3}
+    return tables[library].get(symbol, "?") in "WVwvu"
+
+
+def moved_bindings(program, against, library_path):
+    """The symbols bound to another definition in @p program than in
+    @p against where one of the two is not weak."""
+    mine, theirs = bindings(program, library_path), bindings(against, library_path)
+    moved = []
+    for key, (target, path) in mine.items():
+        if key in theirs and theirs[key][0] != target:
+            other_path = theirs[key][1]
+            if not (weak_in(path, key[1]) and weak_in(other_path, key[1])):
+                moved.append(f"{key[1]}: {other_path} -> {path}")
+    return len(mine), moved
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -63,7 +119,14 @@ def main():
     parser.add_argument("--repeat", type=int, default=20)
     parser.add_argument("--csv", default=os.path.join(ROOT, "doc", "benchmarks",
                                                       "process-start.csv"))
+    parser.add_argument("--bindings", action="store_true",
+                        help="also compare what every symbol binds to (needs --against)")
+    parser.add_argument("--other-blas", default="/usr/lib/x86_64-linux-gnu/blas:"
+                        "/usr/lib/x86_64-linux-gnu/lapack",
+                        help="LD_LIBRARY_PATH of the other BLAS for --bindings")
     args = parser.parse_args()
+    if args.bindings and not args.against:
+        parser.error("--bindings compares two programs: give --against")
     programs = [os.path.abspath(p) for p in [args.program, args.against] if p]
     for p in programs:
         if not os.access(p, os.X_OK):
@@ -85,6 +148,17 @@ def main():
         rows.append(row)
     append_rows(args.csv, COLUMNS, rows)
     write_tables()
+    if args.bindings:
+        failed = False
+        for blas, path in (("the system's BLAS", ""), ("the other BLAS", args.other_blas)):
+            count, moved = moved_bindings(programs[0], programs[1], path)
+            print(f"bindings under {blas}: {count}, moved to another non-weak "
+                  f"definition: {len(moved)}")
+            for line in moved[:20]:
+                print("  " + line)
+            failed = failed or bool(moved)
+        if failed:
+            sys.exit("the two programs bind some symbols to different code")
 
 
 if __name__ == "__main__":

@@ -10,18 +10,20 @@
 # second of CPU in every process the test suite starts.
 #
 # frictional_contact_loader_order() names those libraries first, most
-# symbol relocations first (read from their dynamic sections with readelf
-# at configure time, so it holds for the libraries this machine has). It is
-# an optimisation only: without ldd or readelf, or configured with
-# -DFRICTIONAL_CONTACT_LOADER_ORDER=OFF, the order stays as the linker left
-# it. bench/process_start.py measures it against such a build.
+# symbol relocations first, of those that can move without changing what
+# any symbol binds to (cmake/loader_order.py reads their dynamic sections
+# and symbol tables at configure time, so it holds for the libraries this
+# machine has; the BLAS and LAPACK stay where the linker puts them). It is
+# an optimisation only: without python3, ldd, readelf or nm, or configured
+# with -DFRICTIONAL_CONTACT_LOADER_ORDER=OFF, the order stays as the linker
+# left it. bench/process_start.py measures it against such a build.
 option(FRICTIONAL_CONTACT_LOADER_ORDER
   "Name the libraries with the most symbol relocations first" ON)
 
-# deal.II and the libraries it loads, those with at least @p _minimum
-# symbol relocations, most first, into @p _result (half a second for some
-# 200 libraries).
-function(frictional_contact_heavy_libraries _result _minimum)
+# The list loader_order.py prints for deal.II's library, into @p _result;
+# kept in the cache while deal.II's library and the script stay the same
+# (it reads some 200 libraries' symbol tables: a few seconds).
+function(frictional_contact_heavy_libraries _result)
   # The release library's file (Debian's package names its configuration
   # DEBUGRELEASE).
   set(_deal_ii "")
@@ -32,57 +34,29 @@ function(frictional_contact_heavy_libraries _result _minimum)
       set(_deal_ii ${_location})
     endif()
   endforeach()
-  find_program(_ldd ldd)
-  find_program(_readelf readelf)
+  set(_script ${CMAKE_SOURCE_DIR}/cmake/loader_order.py)
+  file(SHA1 ${_script} _script_hash)
+  set(_key "${_deal_ii};${_script_hash}")
+  if(DEFINED FRICTIONAL_CONTACT_LOADER_LIST
+      AND FRICTIONAL_CONTACT_LOADER_LIST_OF STREQUAL "${_key}")
+    set(${_result} "${FRICTIONAL_CONTACT_LOADER_LIST}" PARENT_SCOPE)
+    return()
+  endif()
+  find_program(_python python3)
   set(_ordered "")
-  if(_deal_ii AND _ldd AND _readelf)
-    execute_process(COMMAND ${_ldd} ${_deal_ii} OUTPUT_VARIABLE _ldd_output
-      RESULT_VARIABLE _ldd_result ERROR_QUIET)
-    if(_ldd_result EQUAL 0)
-      string(REGEX MATCHALL "=> (/[^ ]+) " _found "${_ldd_output}")
-      set(_libraries ${_deal_ii})
-      foreach(_entry ${_found})
-        string(REGEX REPLACE "=> (/[^ ]+) " "\\1" _library "${_entry}")
-        # Not the BLAS and LAPACK: which ones load is chosen at run time
-        # (Debian's alternatives, LD_LIBRARY_PATH: the tests' other BLAS),
-        # and OpenBLAS named here would serve every BLAS call even where
-        # the reference BLAS was chosen.
-        if(NOT _library MATCHES "/lib(open|c)?blas[^/]*$|/liblapack[^/]*$")
-          list(APPEND _libraries ${_library})
-        endif()
-      endforeach()
-      set(_keyed "")
-      foreach(_library ${_libraries})
-        execute_process(COMMAND ${_readelf} -dW ${_library}
-          OUTPUT_VARIABLE _dynamic ERROR_QUIET)
-        # Symbol relocations: all relocation entries (24 bytes each) less
-        # the relative ones, which need no lookup.
-        set(_bytes 0)
-        foreach(_tag RELASZ PLTRELSZ)
-          if(_dynamic MATCHES "\\(${_tag}\\) +([0-9]+) \\(bytes\\)")
-            math(EXPR _bytes "${_bytes} + ${CMAKE_MATCH_1}")
-          endif()
-        endforeach()
-        set(_relative 0)
-        if(_dynamic MATCHES "\\(RELACOUNT\\) +([0-9]+)")
-          set(_relative ${CMAKE_MATCH_1})
-        endif()
-        math(EXPR _count "${_bytes} / 24 - ${_relative}")
-        if(_count GREATER_EQUAL _minimum)
-          # Zero-padded, so that sorting the strings sorts the counts.
-          string(LENGTH "${_count}" _digits)
-          math(EXPR _padding "12 - ${_digits}")
-          string(REPEAT "0" ${_padding} _zeros)
-          list(APPEND _keyed "${_zeros}${_count}|${_library}")
-        endif()
-      endforeach()
-      list(SORT _keyed ORDER DESCENDING)
-      foreach(_entry ${_keyed})
-        string(REGEX REPLACE "^[0-9]+\\|" "" _library "${_entry}")
-        list(APPEND _ordered ${_library})
-      endforeach()
+  if(_deal_ii AND _python)
+    execute_process(COMMAND ${_python} ${_script} ${_deal_ii}
+      OUTPUT_VARIABLE _output RESULT_VARIABLE _status ERROR_VARIABLE _error)
+    if(_status EQUAL 0)
+      string(REGEX MATCHALL "[^\n]+" _ordered "${_output}")
+    else()
+      message(STATUS "The linker's library order (${_error})")
     endif()
   endif()
+  list(LENGTH _ordered _n)
+  message(STATUS "Libraries the programs name for the dynamic loader: ${_n}")
+  set(FRICTIONAL_CONTACT_LOADER_LIST "${_ordered}" CACHE INTERNAL "")
+  set(FRICTIONAL_CONTACT_LOADER_LIST_OF "${_key}" CACHE INTERNAL "")
   set(${_result} "${_ordered}" PARENT_SCOPE)
 endfunction()
 
@@ -92,15 +66,7 @@ function(frictional_contact_loader_order _target)
   if(NOT FRICTIONAL_CONTACT_LOADER_ORDER)
     return()
   endif()
-  # Read once per configure run, kept in a global property.
-  get_property(_known GLOBAL PROPERTY FRICTIONAL_CONTACT_LOADER_ORDER SET)
-  if(NOT _known)
-    frictional_contact_heavy_libraries(_found 200)
-    list(LENGTH _found _n)
-    message(STATUS "Libraries named first for the dynamic loader: ${_n}")
-    set_property(GLOBAL PROPERTY FRICTIONAL_CONTACT_LOADER_ORDER "${_found}")
-  endif()
-  get_property(_libraries GLOBAL PROPERTY FRICTIONAL_CONTACT_LOADER_ORDER)
+  frictional_contact_heavy_libraries(_libraries)
   if(_libraries)
     target_link_libraries(${_target}
       -Wl,--no-as-needed ${_libraries} -Wl,--as-needed)
