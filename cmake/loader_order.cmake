@@ -21,8 +21,8 @@ option(FRICTIONAL_CONTACT_LOADER_ORDER
   "Name the libraries with the most symbol relocations first" ON)
 
 # The list loader_order.py prints for deal.II's library, into @p _result;
-# kept in the cache while deal.II's library and the script stay the same
-# (it reads some 200 libraries' symbol tables: a few seconds).
+# kept in the cache while deal.II's library file and the script stay the
+# same (it reads some 200 libraries' symbol tables: a few seconds).
 function(frictional_contact_heavy_libraries _result)
   # The release library's file (Debian's package names its configuration
   # DEBUGRELEASE).
@@ -36,7 +36,9 @@ function(frictional_contact_heavy_libraries _result)
   endforeach()
   set(_script ${CMAKE_SOURCE_DIR}/cmake/loader_order.py)
   file(SHA1 ${_script} _script_hash)
-  set(_key "${_deal_ii};${_script_hash}")
+  # An upgraded deal.II package (its file's time) may load other libraries.
+  file(TIMESTAMP ${_deal_ii} _deal_ii_time)
+  set(_key "${_deal_ii};${_deal_ii_time};${_script_hash}")
   if(DEFINED FRICTIONAL_CONTACT_LOADER_LIST
       AND FRICTIONAL_CONTACT_LOADER_LIST_OF STREQUAL "${_key}")
     set(${_result} "${FRICTIONAL_CONTACT_LOADER_LIST}" PARENT_SCOPE)
