@@ -26,9 +26,9 @@ t = 2, unless the law is evaluated at the Gauss-Lobatto points
 (doc/performance.md, "The 3D ironing at scale").
 With --hard-iterations M, an increment whose solve took more than M
 Newton steps has the next one halved, and the increments after it keep
-that length (<Loading/Hard increment iterations>); with --folder, the runs are made there (and kept: their
-statistics files show a long run's progress) instead of in a temporary
-folder.
+that length (<Loading/Hard increment iterations>); with --folder, the
+runs are made there (and kept: their statistics files show a long run's
+progress) instead of in a temporary folder.
 
 usage: bench/ironing_3d_scale.py [--program build/contact] [--cells 72,8,24]
            [--variants "fixed point:2,fixed point:0,every Newton iterate:2"]

@@ -21,6 +21,7 @@ usage: bench/process_start.py [--program build/contact] [--against PROGRAM]
                               [--other-blas DIRS]
 """
 import argparse
+import functools
 import glob
 import os
 import re
@@ -36,6 +37,8 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
 from runs import ENVIRONMENT, print_row  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "cmake"))
+import loader_order  # noqa: E402
 
 COLUMNS = ["program", "needed_libraries", "repeat", "wall_s", "cpu_s", "commit"]
 # As the tests run the program (tests/CMakeLists.txt): no daemon for a
@@ -63,7 +66,13 @@ def start(program):
 
 
 def bindings(program, library_path):
-    """{(the binding object, symbol): the object it binds to} of a start."""
+    """{(the binding object, symbol): the object it binds to} of a start,
+    the program itself named "the program" on both sides."""
+    def name(path):
+        return "the program" if path == program else path
+
+    pattern = re.compile(r"binding file (\S+) \[0\] to (\S+) \[0\]: "
+                         r"normal symbol `([^'@]+)")
     with tempfile.TemporaryDirectory() as folder:
         environment = dict(START_ENVIRONMENT, LD_DEBUG="bindings",
                            LD_DEBUG_OUTPUT=os.path.join(folder, "bindings"))
@@ -72,41 +81,30 @@ def bindings(program, library_path):
         subprocess.run([program, "--help"], stdout=subprocess.DEVNULL,
                        stderr=subprocess.DEVNULL, env=environment, check=True)
         log = max(glob.glob(os.path.join(folder, "bindings*")), key=os.path.getsize)
-        found = {}
-        pattern = re.compile(r"binding file (\S+) \[0\] to (\S+) \[0\]: "
-                             r"normal symbol `([^'@]+)")
         with open(log) as f:
-            for line in f:
-                match = pattern.search(line)
-                if match:
-                    source, target, symbol = match.groups()
-                    source = "the program" if source == program else source
-                    target = "the program" if target == program else target
-                    found[(source, symbol)] = (target, program if target == "the program"
-                                               else target)
-        return found
+            return {(name(source), symbol): name(target) for source, target, symbol in
+                    (m.groups() for m in map(pattern.search, f) if m)}
 
 
-def weak_in(library, symbol, tables={}):
-    """Whether @p library defines @p symbol weakly (nm)."""
-    if library not in tables:
-        listing = subprocess.run(["nm", "-D", "--defined-only", library],
-                                 capture_output=True, text=True).stdout
-        tables[library] = {f[2].split("@")[0]: f[1] for f in
-                           (line.split() for line in listing.splitlines()) if len(f) >= 3}
-    return tables[library].get(symbol, "?") in "WVwvu"
+@functools.lru_cache(maxsize=None)
+def weak_definitions(library):
+    """{symbol: defined weakly?} of @p library (cmake/loader_order.py)."""
+    return loader_order.definitions(library)
 
 
 def moved_bindings(program, against, library_path):
     """The symbols bound to another definition in @p program than in
     @p against where one of the two is not weak."""
     mine, theirs = bindings(program, library_path), bindings(against, library_path)
+
+    def weak(target, own, symbol):
+        return weak_definitions(own if target == "the program" else target).get(symbol, False)
     moved = []
-    for key, (target, path) in mine.items():
-        if key in theirs and theirs[key][0] != target:
-            other_path = theirs[key][1]
-            if not (weak_in(path, key[1]) and weak_in(other_path, key[1])):
-                moved.append(f"{key[1]}: {other_path} -> {path}")
+    for (source, symbol), target in mine.items():
+        other = theirs.get((source, symbol), target)
+        if other != target and not (weak(target, program, symbol) and
+                                    weak(other, against, symbol)):
+            moved.append(f"{symbol}: {other} -> {target}")
     return len(mine), moved
 
 

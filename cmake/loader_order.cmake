@@ -23,7 +23,7 @@ option(FRICTIONAL_CONTACT_LOADER_ORDER
 # The list loader_order.py prints for deal.II's library, into @p _result;
 # kept in the cache while deal.II's library file and the script stay the
 # same (it reads some 200 libraries' symbol tables: a few seconds).
-function(frictional_contact_heavy_libraries _result)
+function(frictional_contact_library_order _result)
   # The release library's file (Debian's package names its configuration
   # DEBUGRELEASE).
   set(_deal_ii "")
@@ -63,12 +63,12 @@ function(frictional_contact_heavy_libraries _result)
 endfunction()
 
 # Names those libraries right after what @p _target already links, in
-# their order (--no-as-needed keeps every one in the list the loader reads).
+# that order (--no-as-needed keeps every one in the list the loader reads).
 function(frictional_contact_loader_order _target)
   if(NOT FRICTIONAL_CONTACT_LOADER_ORDER)
     return()
   endif()
-  frictional_contact_heavy_libraries(_libraries)
+  frictional_contact_library_order(_libraries)
   if(_libraries)
     target_link_libraries(${_target}
       -Wl,--no-as-needed ${_libraries} -Wl,--as-needed)
