@@ -48,6 +48,19 @@ namespace FrictionalContact
 
 
   template <int dim>
+  typename BodyResponse<dim>::CellScratch &
+  BodyResponse<dim>::fresh_scratch() const
+  {
+    // The body's element lives as long as the body, and this with it.
+    if (!scratch)
+      scratch = std::make_unique<CellScratch>(body.get_dof_handler().get_fe());
+    scratch->smallest_jacobian = PlacedMinimum<dim>();
+    return *scratch;
+  }
+
+
+
+  template <int dim>
   void
   BodyResponse<dim>::evaluate_cell(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -153,7 +166,7 @@ namespace FrictionalContact
                                     TrilinosWrappers::SparseMatrix  *tangent) const
   {
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
-    CellScratch            scratch(dof_handler.get_fe());
+    CellScratch           &scratch = fresh_scratch();
     force = 0;
     if (tangent != nullptr)
       *tangent = 0;
@@ -212,7 +225,7 @@ namespace FrictionalContact
         matrix = 0;
       }
     positions.update(dof_handler, constraints, matrix);
-    CellScratch        scratch(dof_handler.get_fe());
+    CellScratch       &scratch = fresh_scratch();
     FullMatrix<double> before(scratch.matrix.m(), scratch.matrix.n());
     force = 0;
     types::global_dof_index plastic_points = 0;
@@ -294,7 +307,7 @@ namespace FrictionalContact
     if (!history.active())
       return;
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
-    CellScratch            scratch(dof_handler.get_fe());
+    CellScratch           &scratch = fresh_scratch();
     std::vector<double>    updated;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -315,7 +328,7 @@ namespace FrictionalContact
   BodyResponse<dim>::smallest_jacobian(const Vector &u_ghosted) const
   {
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
-    CellScratch            scratch(dof_handler.get_fe());
+    CellScratch           &scratch = fresh_scratch();
     if (finite_strain())
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -330,7 +343,7 @@ namespace FrictionalContact
   BodyResponse<dim>::cell_states(const Vector &u_ghosted) const
   {
     const DoFHandler<dim> &dof_handler = body.get_dof_handler();
-    CellScratch            scratch(dof_handler.get_fe());
+    CellScratch           &scratch = fresh_scratch();
     std::vector<CellState<dim>> states(
       dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())

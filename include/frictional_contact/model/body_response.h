@@ -13,6 +13,7 @@
 #include <frictional_contact/model/quadrature_history.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace FrictionalContact
@@ -210,6 +211,13 @@ namespace FrictionalContact
     void
     finite_strain_force_and_tangent(const bool with_tangent, CellScratch &scratch) const;
 
+    /// The scratch of the cell kernels, made at the first call (its
+    /// FEValues and their tables of the reference cell: a sizeable share
+    /// of an evaluation on a small mesh) and kept; its smallest det F
+    /// forgotten.
+    CellScratch &
+    fresh_scratch() const;
+
     /// Throws an InvertedCell on every rank if some rank's @p scratch met
     /// det F <= 0. Collective.
     void
@@ -228,5 +236,7 @@ namespace FrictionalContact
     CellMatrixPositions<dim> positions;
     /// See element_force_norm().
     mutable double element_force_size = 0;
+    /// See fresh_scratch().
+    mutable std::unique_ptr<CellScratch> scratch;
   };
 } // namespace FrictionalContact
