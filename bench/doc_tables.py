@@ -31,7 +31,7 @@ import os
 import re
 import sys
 
-from doc_table_builders import TABLES, rows, thousands
+from doc_table_builders import TABLES, latest_by_scene, rows, thousands
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -184,8 +184,23 @@ def process_start(root):
     return "(bench/process_start.py has not timed both orders)"
 
 
+def finite_strain_block(root):
+    """The block on block's ratios of finite to small strain, with the
+    pair's geometry at every Newton iterate, from the last run of
+    bench/finite_strain.py (doc/performance.md)."""
+    latest = latest_by_scene(root, "finite-strain.csv", "kinematics")
+    within = "finite strain, pair geometry at every Newton iterate"
+    refined = latest.get("block_on_block_2d refined 3 times", {}).get(within)
+    own = latest.get("block_on_block_2d", {}).get(within)
+    if not refined or not own:
+        return "(bench/finite_strain.py has not run the block on block)"
+    return (f"the block on block's refined mesh at {refined['finite_over_small']} times "
+            f"small strain, its own mesh at {own['finite_over_small']}")
+
+
 QUOTES = {
     "process-start": process_start,
+    "finite-strain-block": finite_strain_block,
     "ironing-fold": ironing_fold,
     "step42-goals": step42_goals,
     "nearly-incompressible-errors": nearly_incompressible_errors,
