@@ -57,7 +57,11 @@ namespace FrictionalContact
                       Patterns::Integer(0, 20),
                       "How often an increment is refined and solved again "
                       "(at most; the refinement stops earlier when no cell "
-                      "is marked or the dof budget is reached).");
+                      "is marked or the dof budget is reached). Each solve "
+                      "on a refined mesh starts from the last mesh's "
+                      "solution, its displacement and contact forces "
+                      "carried over (from the increment's start where that "
+                      "does not converge).");
     prm.leave_subsection();
   }
 

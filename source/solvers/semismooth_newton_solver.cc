@@ -148,8 +148,13 @@ namespace FrictionalContact
     // positive scale serves the merit's force balance.
     const double mean_c =
       contact.n_candidates() > 0 ? mean_over_candidates(contact, c, comm) : 1.;
-    // From a warm start (du != 0), a nonlinear law's tangent is taken there.
-    problem.internal_force(du, work.K_du, du.linfty_norm() > 0);
+    // From a warm start (du != 0), a nonlinear law's tangent is taken there:
+    // now, or once the first Newton step's preconditioner is made
+    // (NonlinearStiffness::preconditioner_from_start()).
+    const bool warm = du.linfty_norm() > 0;
+    bool       tangent_after_preconditioner =
+      warm && problem.nonlinear != nullptr && problem.nonlinear->preconditioner_from_start();
+    problem.internal_force(du, work.K_du, warm && !tangent_after_preconditioner);
     contact.apply(r, work.T_r);
     SolveStatistics           result;
     const NodeProjection<dim> P(contact, conditions, problem.gap_slopes);
@@ -224,6 +229,11 @@ namespace FrictionalContact
         // The preconditioner for the new conditions, if they changed.
         if (preconditioner.update(sets, c, friction, comm))
           ++result.amg_updates;
+        if (tangent_after_preconditioner)
+          {
+            problem.internal_force(du, work.K_du, true);
+            tangent_after_preconditioner = false;
+          }
 
         // The linear problem: du = du_D + w, with du_D meeting the node
         // conditions and w in the subspace where they are homogeneous.

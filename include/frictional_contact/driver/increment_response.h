@@ -62,6 +62,13 @@ namespace FrictionalContact
       return scale;
     }
 
+    /// For laws with history (plasticity).
+    bool
+    preconditioner_from_start() const override
+    {
+      return model.get_history().active();
+    }
+
     /// The smallest det F at u_0 + @p du and its cell (finite strain).
     std::string
     worst_place(const Vector &du) override;

@@ -68,16 +68,22 @@ namespace FrictionalContact
     void
     finish_increment(const unsigned int l);
 
-    /// Solves increment @p l on the current mesh from the state; throws a
-    /// SolverError (after the postprocessors of a failed increment) if the
-    /// contact solve does not converge.
+    /// Solves increment @p l on the current mesh from the state, or from
+    /// @p from_coarser (the solve of the mesh before a refinement, carried
+    /// over; again from the state if that fails); throws a SolverError
+    /// (after the postprocessors of a failed increment) if the contact
+    /// solve does not converge.
     IncrementOutcome<dim>
-    solve_on_current_mesh(const unsigned int l);
+    solve_on_current_mesh(const unsigned int l, const WarmStart<dim> *from_coarser = nullptr);
 
     /// Adapts the mesh to the solution in @p outcome and carries the state
-    /// over; returns whether the mesh changed (refinement cycle @p cycle).
+    /// over, and the solve's increment and contact forces into
+    /// @p from_coarser; returns whether the mesh changed (refinement cycle
+    /// @p cycle).
     bool
-    adapt_mesh(const IncrementOutcome<dim> &outcome, const unsigned int cycle);
+    adapt_mesh(const IncrementOutcome<dim> &outcome,
+               const unsigned int           cycle,
+               WarmStart<dim>              &from_coarser);
 
     /// Writes a checkpoint after increment @p l.
     void

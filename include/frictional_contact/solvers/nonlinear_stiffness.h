@@ -41,6 +41,19 @@ namespace FrictionalContact
     virtual types::global_dof_index
     plastic_points() const = 0;
 
+    /// Whether a solve that starts away from the increment's start makes
+    /// its preconditioner before it takes the tangent there, from the
+    /// stiffness at the start: a plastic tangent's soft zones spoil the
+    /// AMG made from it (on the step-42 scene's last mesh, started from
+    /// the coarser mesh's solution, 15 times the Krylov iterations), a
+    /// hyperelastic tangent's do not (the O-ring's and the ironing's
+    /// Krylov iterations grew by a twentieth the other way).
+    virtual bool
+    preconditioner_from_start() const
+    {
+      return false;
+    }
+
     /// Where the laws come nearest to failing at @p du, for the line of a
     /// solve that failed ("the smallest det F, ..., is in the cell at
     /// ..."); empty if they name no place (small strain). Collective.
