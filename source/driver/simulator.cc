@@ -314,18 +314,20 @@ namespace FrictionalContact
     // The contact forces of the state and of the solve go over as
     // tractions (force per nodal area), which do not depend on the mesh;
     // the solve's increment as it is.
-    std::vector<Tensor<1, dim>> tractions(contact.n_local());
-    std::vector<Tensor<1, dim>> solved_tractions(contact.n_local());
-    for (unsigned int j = 0; j < contact.n_local(); ++j)
-      {
-        tractions[j] = state.contact_forces[j] / contact.nodal_area(j);
-        solved_tractions[j] =
-          contact.to_cartesian(j, outcome.reactions[j]) / contact.nodal_area(j);
-      }
-    TrilinosWrappers::MPI::Vector traction_field = body.make_vector();
-    contact.set_nodal_values(tractions, traction_field);
-    TrilinosWrappers::MPI::Vector solved_traction_field = body.make_vector();
-    contact.set_nodal_values(solved_tractions, solved_traction_field);
+    const auto traction_field = [&](const auto &cartesian_force) {
+      std::vector<Tensor<1, dim>> tractions(contact.n_local());
+      for (unsigned int j = 0; j < contact.n_local(); ++j)
+        tractions[j] = cartesian_force(j) / contact.nodal_area(j);
+      TrilinosWrappers::MPI::Vector field = body.make_vector();
+      contact.set_nodal_values(tractions, field);
+      return field;
+    };
+    TrilinosWrappers::MPI::Vector state_tractions =
+      traction_field([&](const unsigned int j) { return state.contact_forces[j]; });
+    TrilinosWrappers::MPI::Vector solved_tractions =
+      traction_field([&](const unsigned int j) {
+        return contact.to_cartesian(j, outcome.reactions[j]);
+      });
     from_coarser.du = outcome.du;
 
     const bool changed = model.adapt(
@@ -336,19 +338,17 @@ namespace FrictionalContact
           increment_solver.release();
         return flagged;
       },
-      {&state.u, &traction_field, &from_coarser.du, &solved_traction_field});
+      {&state.u, &state_tractions, &from_coarser.du, &solved_tractions});
     if (!changed)
       return false;
-    state.contact_forces.resize(contact.n_local());
-    from_coarser.forces.resize(contact.n_local());
-    for (unsigned int j = 0; j < contact.n_local(); ++j)
-      {
-        state.contact_forces[j] =
-          contact.nodal_value(j, traction_field) * contact.nodal_area(j);
-        from_coarser.forces[j] =
-          contact.nodal_value(j, solved_traction_field) * contact.nodal_area(j);
-      }
-    from_coarser.tolerance = 0;
+    const auto forces_of = [&](const TrilinosWrappers::MPI::Vector &field) {
+      std::vector<Tensor<1, dim>> forces(contact.n_local());
+      for (unsigned int j = 0; j < contact.n_local(); ++j)
+        forces[j] = contact.nodal_value(j, field) * contact.nodal_area(j);
+      return forces;
+    };
+    state.contact_forces = forces_of(state_tractions);
+    from_coarser.forces  = forces_of(solved_tractions);
     model.assemble();
     increment_solver.initialize(model);
     pcout << "  mesh refinement " << cycle + 1 << ": "

@@ -1,7 +1,5 @@
 #include <frictional_contact/model/gradient_contraction.h>
 
-#include <algorithm>
-
 namespace FrictionalContact
 {
   template <int dim>
@@ -61,28 +59,7 @@ namespace FrictionalContact
                                    FullMatrix<double> &matrix)
   {
     AssertDimension(n_added * dim, weighted_gradients.m());
-    // product = weighted_gradients^T gradients_through_tensor: in 2D (4 x
-    // 16 from 8 rows) as a sum of rank-one rows, which takes less than a
-    // call to BLAS; in 3D (8 x 72 from 24 rows) BLAS's gemm is faster
-    // (bench/finite_strain.py, Hertz 2D and 3D).
-    if constexpr (dim == 2)
-      {
-        constexpr unsigned int columns = dim * dim * n_vertices;
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          {
-            double sum[columns] = {};
-            for (unsigned int k = 0; k < weighted_gradients.m(); ++k)
-              {
-                const double  w       = weighted_gradients(k, a);
-                const double *through = &gradients_through_tensor(k, 0);
-                for (unsigned int j = 0; j < columns; ++j)
-                  sum[j] += w * through[j];
-              }
-            std::copy(sum, sum + columns, &product(a, 0));
-          }
-      }
-    else
-      weighted_gradients.Tmmult(product, gradients_through_tensor);
+    weighted_gradients.Tmmult(product, gradients_through_tensor);
     for (unsigned int a = 0; a < n_vertices; ++a)
       for (unsigned int c = 0; c < dim; ++c)
         for (unsigned int d = 0; d < dim; ++d)
