@@ -65,12 +65,13 @@ namespace FrictionalContact
                       "|F_k-1|)^2 (their choice 2, safeguarded, at most "
                       "Linear reduction), with |F| the line search's merit; "
                       "after a shortened step ten times less than the "
-                      "smaller of that and the previous term; after " +
+                      "smaller of that and the previous term, down to 1e-4; "
+                      "after " +
                         std::to_string(SemismoothNewton::steps_before_fall_back) +
                         " steps without progress, the fixed rule with a "
                         "tenth of Linear reduction. fixed: by Linear "
                         "reduction, ten times more after a step the line "
-                        "search had to shorten. Measured "
+                        "search had to shorten (down to 1e-4). Measured "
                         "(doc/performance.md): 40 % fewer Krylov iterations "
                         "than fixed on example II.");
   }
