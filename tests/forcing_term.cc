@@ -1,11 +1,12 @@
 // The forcing terms of the Newton method's linear solves
 // (<Contact solver/Semismooth Newton/Forcing term>), on made-up residual
-// sequences: the fixed rule tightens ten times after a shortened step and
-// relaxes again after full steps; Eisenstat-Walker's choice 2 follows the
+// sequences: the fixed rule tightens ten times after a shortened step
+// (down to 1e-4, or the largest term where that is smaller) and relaxes
+// again after full steps; Eisenstat-Walker's choice 2 follows the
 // square of the residual ratio, is held up by its safeguard while it is
 // large, is ten times smaller after a shortened step (and shortened steps
-// in a row tighten it further, as the fixed rule does), never exceeds the
-// largest forcing term and never falls below 1e-8; falling back gives the
+// in a row tighten it further, as the fixed rule does, down to 1e-4),
+// never exceeds the largest forcing term and never falls below 1e-8; falling back gives the
 // fixed rule with a tenth of the largest term.
 #include <frictional_contact/solvers/forcing_term.h>
 
@@ -62,6 +63,12 @@ main()
          1e-2,
          1.,
          std::vector<Step>(8, {1., false}));
+  // A largest term below the floor of shortened steps: it stays there.
+  follow("fixed, a largest term below that floor",
+         Rule::fixed,
+         1e-5,
+         1.,
+         std::vector<Step>(3, {1., false}));
   // Quadratic convergence: eta falls with the square of the ratio, down to
   // the floor (the safeguard 0.9 eta^2 acts at the first step only).
   follow("Eisenstat-Walker, quadratic convergence",
@@ -104,6 +111,12 @@ main()
   // Falling back after the first step: the fixed rule with a tenth of the
   // largest term, 0.05, ten times smaller after a shortened step, never
   // above 0.05 again. The fixed rule does not fall back further.
+  // Shortened steps in a row: a tenth each, down to 1e-4.
+  follow("Eisenstat-Walker, shortened steps down to their floor",
+         Rule::eisenstat_walker,
+         0.5,
+         1.,
+         std::vector<Step>(5, {0.99, false}));
   follow("Eisenstat-Walker, falling back",
          Rule::eisenstat_walker,
          0.5,
