@@ -107,7 +107,7 @@ namespace FrictionalContact
     }
 
   private:
-    static constexpr double gamma    = 0.9;
+    static constexpr double gamma                         = 0.9;
     static constexpr double smallest                      = 1e-8;
     static constexpr double smallest_after_shortened_step = 1e-4;
     Rule                    rule;
