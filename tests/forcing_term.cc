@@ -6,8 +6,8 @@
 // square of the residual ratio, is held up by its safeguard while it is
 // large, is ten times smaller after a shortened step (and shortened steps
 // in a row tighten it further, as the fixed rule does, down to 1e-4),
-// never exceeds the largest forcing term and never falls below 1e-8; falling back gives the
-// fixed rule with a tenth of the largest term.
+// never exceeds the largest forcing term and never falls below 1e-8;
+// falling back gives the fixed rule with a tenth of the largest term.
 #include <frictional_contact/solvers/forcing_term.h>
 
 #include <iostream>
@@ -108,15 +108,15 @@ main()
          0.5,
          1.,
          {{1e-6, true}, {1e-14, true}});
-  // Falling back after the first step: the fixed rule with a tenth of the
-  // largest term, 0.05, ten times smaller after a shortened step, never
-  // above 0.05 again. The fixed rule does not fall back further.
   // Shortened steps in a row: a tenth each, down to 1e-4.
   follow("Eisenstat-Walker, shortened steps down to their floor",
          Rule::eisenstat_walker,
          0.5,
          1.,
          std::vector<Step>(5, {0.99, false}));
+  // Falling back after the first step: the fixed rule with a tenth of the
+  // largest term, 0.05, ten times smaller after a shortened step, never
+  // above 0.05 again. The fixed rule does not fall back further.
   follow("Eisenstat-Walker, falling back",
          Rule::eisenstat_walker,
          0.5,
