@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <frictional_contact/base/gather_doubles.h>
 #include <frictional_contact/model/mortar_interface.h>
 
 #include <boost/geometry/index/rtree.hpp>
@@ -133,7 +134,7 @@ namespace FrictionalContact
       }
     all_master_faces.clear();
     const unsigned int stride = n_face_vertices * dim + 1;
-    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, packed))
+    for (const std::vector<double> &part : gather_doubles(comm, packed))
       for (std::size_t k = 0; k + stride <= part.size(); k += stride)
         {
           Face face;
@@ -175,7 +176,7 @@ namespace FrictionalContact
               }
           }
     master_constraints.clear();
-    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, constraint_data))
+    for (const std::vector<double> &part : gather_doubles(comm, constraint_data))
       for (std::size_t k = 0; k < part.size();)
         {
           const auto dof  = static_cast<types::global_dof_index>(part[k]);
@@ -240,7 +241,7 @@ namespace FrictionalContact
     std::vector<std::pair<MortarSegments::FaceVertices<dim>, const Face *>> faces;
     const unsigned int stride = n_face_vertices * dim;
     unsigned int       index  = 0;
-    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm, packed))
+    for (const std::vector<double> &part : gather_doubles(comm, packed))
       for (std::size_t k = 0; k + stride <= part.size(); k += stride, ++index)
         {
           MortarSegments::FaceVertices<dim> x;
