@@ -309,6 +309,20 @@ def finite_strain(root):
                      "increment in elastic solves", "finite / small"], body)
 
 
+def coarse_solver(root):
+    """bench/coarse_solver.py: each scene's last pair of rows, MUMPS and
+    KLU on ML's coarsest level."""
+    latest = latest_by_scene(root, "coarse-solver.csv", "coarse_solver")
+    body = []
+    for scene, solvers in latest.items():
+        for solver, r in solvers.items():
+            body.append([scene, f"{r['dim']}D", r["ranks"], solver, thousands(r["d"]),
+                         r["newton_iterations"], thousands(r["krylov_iterations"]),
+                         seconds(r["solve_s"]), r["klu_over_mumps"]])
+    return markdown(["scene", "dim", "ranks", "coarse solver", "d", "Newton steps",
+                     "Krylov iterations", "solve", "KLU / MUMPS"], body)
+
+
 def extrapolated_start(root):
     """bench/extrapolated_start.py: each scene's last pair of rows, with
     the time of the extrapolated start against the start from no motion."""
@@ -437,6 +451,7 @@ TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,
+    "coarse-solver": coarse_solver,
     "extrapolated-start": extrapolated_start,
     "ironing-3d": ironing_3d,
     "ironing-3d-scale": ironing_3d_scale,

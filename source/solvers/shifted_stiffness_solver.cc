@@ -164,14 +164,17 @@ namespace FrictionalContact
                       Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
                       "The smoother on each level of the AMG.");
     prm.declare_entry("AMG coarse solver",
-                      "MUMPS",
-                      Patterns::Selection("MUMPS|KLU"),
-                      "The direct solver of ML's coarsest level (Amesos): the "
-                      "multifrontal MUMPS or KLU, deal.II's default. The "
+                      "auto",
+                      Patterns::Selection("auto|MUMPS|KLU"),
+                      "The direct solver of ML's coarsest level (Amesos), "
+                      "which the Newton method's preconditioner refactors at "
+                      "every change of the node conditions and applies at "
+                      "every Krylov iteration: the multifrontal MUMPS or KLU, "
+                      "deal.II's default. auto: KLU in 2D, MUMPS in 3D. The "
                       "coarsest levels of 3D elasticity are dense enough for "
-                      "MUMPS to factor them several times faster, which the "
-                      "Newton method's preconditioner does at every change "
-                      "of the node conditions (doc/performance.md).");
+                      "MUMPS to factor them faster; in 2D, MUMPS's fixed cost "
+                      "per call outweighs its solve (doc/performance.md, "
+                      "\"The coarse solver\").");
     prm.declare_entry("AMG near null space",
                       "rigid body modes",
                       Patterns::Selection("rigid body modes|translations"),
@@ -222,7 +225,8 @@ namespace FrictionalContact
     refactorization_factor = prm.get_double("Cholesky refactorization factor");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother_type         = prm.get("AMG smoother type");
-    coarse_solver         = "Amesos-" + prm.get("AMG coarse solver");
+    const std::string coarse = prm.get("AMG coarse solver");
+    coarse_solver = "Amesos-" + (coarse != "auto" ? coarse : dim == 2 ? "KLU" : "MUMPS");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     prolongator_damping   = prm.get_double("AMG prolongator damping");
     translations_only = prm.get("AMG near null space") == "translations";
