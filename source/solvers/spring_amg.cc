@@ -162,9 +162,11 @@ namespace FrictionalContact
         Amesos factory;
         direct_solver.reset(factory.Create(direct_name, *direct_problem));
         // MUMPS's row and column scaling (a sixth of its time here) does
-        // nothing for these well-scaled symmetric positive definite levels.
+        // nothing for these well-scaled symmetric positive definite levels,
+        // nor does KLU's search for new pivots at each refactorization.
         Teuchos::ParameterList direct_parameters;
         direct_parameters.sublist("mumps").set("ICNTL(8)", 0);
+        direct_parameters.set("Refactorize", true);
         direct_solver->SetParameters(direct_parameters);
       }
 
