@@ -25,8 +25,10 @@ namespace FrictionalContact
   template <int dim>
   BodyResponse<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
     : gauss(2)
-    , gauss_values(fe, gauss, update_gradients | update_JxW_values)
-    , lobatto_values(fe, QGaussLobatto<dim>(3), update_gradients | update_JxW_values)
+    , gauss_values(fe.base_element(0), gauss, update_gradients | update_JxW_values)
+    , lobatto_values(fe.base_element(0),
+                     QGaussLobatto<dim>(3),
+                     update_gradients | update_JxW_values)
     , dof(GeometryInfo<dim>::vertices_per_cell)
     , u(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
@@ -73,7 +75,7 @@ namespace FrictionalContact
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
     scratch.corner_points                = law.elastic().corner_points;
     FEValues<dim>            &fe_values  = scratch.fe_values();
-    fe_values.reinit(cell);
+    fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
     cell->get_dof_values(u_ghosted, scratch.u);
     scratch.finite_strain = law.elastic().finite_strain;
 
@@ -88,7 +90,7 @@ namespace FrictionalContact
         for (unsigned int a = 0; a < n_vertices; ++a)
           {
             const Tensor<1, dim> &g = scratch.vertex_gradient[q][a] =
-              fe_values.shape_grad(scratch.dof[a][0], q);
+              fe_values.shape_grad(a, q);
             for (unsigned int c = 0; c < dim; ++c)
               {
                 gradient[c] += scratch.u(scratch.dof[a][c]) * g;

@@ -140,10 +140,12 @@ namespace FrictionalContact
     cell_states(const Vector &u_ghosted) const;
 
   private:
-    /// What one cell needs: FEValues on the 2 x 2 (x 2) Gauss points and
-    /// on the 3 x 3 (x 3) Gauss-Lobatto points (a body with
-    /// <Material/Quadrature> = Gauss-Lobatto), the local displacement, the
-    /// strains and the responses at the points of the cell's rule.
+    /// What one cell needs: FEValues of the vertices' scalar Q1 functions
+    /// (the system's copies of them would be copied out at every cell) on
+    /// the 2 x 2 (x 2) Gauss points and on the 3 x 3 (x 3) Gauss-Lobatto
+    /// points (a body with <Material/Quadrature> = Gauss-Lobatto), the
+    /// local displacement, the strains and the responses at the points of
+    /// the cell's rule.
     struct CellScratch
     {
       explicit CellScratch(const FiniteElement<dim> &fe);
