@@ -19,13 +19,12 @@ import argparse
 import os
 import re
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, solve_seconds, print_row  # noqa: E402
+from runs import NO_OUTPUT, best_alternately, run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["scene", "dim", "ranks", "coarse_solver", "d", "newton_iterations",
            "krylov_iterations", "solve_s", "klu_over_mumps"]
@@ -70,13 +69,8 @@ def main():
         parser.error(f"no scene {', '.join(sorted(unknown))}")
     rows = []
     for scene, ranks in (s for s in SCENES if s[0] in chosen):
-        best = {}
-        for _ in range(args.repeat):
-            for solver in SOLVERS:
-                with tempfile.TemporaryDirectory() as folder:
-                    result = run(args.program, scene, solver, ranks, folder)
-                if solver not in best or result["solve_s"] < best[solver]["solve_s"]:
-                    best[solver] = result
+        best = best_alternately(args.repeat, SOLVERS, lambda solver, folder:
+                                run(args.program, scene, solver, ranks, folder))
         ratio = best["KLU"]["solve_s"] / best["MUMPS"]["solve_s"]
         for solver in SOLVERS:
             row = dict(best[solver], scene=scene, ranks=ranks, coarse_solver=solver,

@@ -20,13 +20,12 @@ import argparse
 import os
 import re
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, solve_seconds, print_row  # noqa: E402
+from runs import NO_OUTPUT, best_alternately, run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "start", "d", "increments", "iterations",
            "krylov_iterations", "solve_s", "max_u"]
@@ -71,13 +70,8 @@ def main():
     args = parser.parse_args()
     rows = []
     for name, scene, ranks, more in SCENES:
-        best = {}
-        for _ in range(args.repeat):
-            for start in STARTS:
-                with tempfile.TemporaryDirectory() as folder:
-                    result = run(args.program, scene, more, start, ranks, folder)
-                if start not in best or result["solve_s"] < best[start]["solve_s"]:
-                    best[start] = result
+        best = best_alternately(args.repeat, STARTS, lambda start, folder:
+                                run(args.program, scene, more, start, ranks, folder))
         ends = [float(r["max_u"]) for r in best.values()]
         # The same to the solver's tolerance (a scene that unloads ends at
         # round-off).

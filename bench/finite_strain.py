@@ -19,13 +19,12 @@ import argparse
 import os
 import re
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, solve_seconds, print_row  # noqa: E402
+from runs import NO_OUTPUT, best_alternately, run as run_program, solve_seconds, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -92,15 +91,10 @@ def main():
         parser.error(f"no scene {', '.join(sorted(unknown))}")
     rows = []
     for name, scene, ranks, more in (s for s in SCENES if s[0] in chosen):
-        best = {}
         variants = [v for v in VARIANTS if v != WITHIN_NEWTON or name in PAIR_SCENES]
         kinematics = [v for v in variants if v != "no contact"]
-        for _ in range(args.repeat):
-            for variant in variants:
-                with tempfile.TemporaryDirectory() as folder:
-                    result = run(args.program, scene, more, variant, ranks, folder)
-                if variant not in best or result["solve_s"] < best[variant]["solve_s"]:
-                    best[variant] = result
+        best = best_alternately(args.repeat, variants, lambda variant, folder:
+                                run(args.program, scene, more, variant, ranks, folder))
         unit = best["no contact"]["solve_s"]
         per_increment = {v: best[v]["solve_s"] / best[v]["increments"] for v in kinematics}
         for variant in kinematics:

@@ -17,13 +17,12 @@ import argparse
 import os
 import re
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, run as run_program, print_row  # noqa: E402
+from runs import NO_OUTPUT, best_alternately, run as run_program, print_row  # noqa: E402
 
 COLUMNS = ["scene", "ranks", "version", "d", "newton_iterations", "wall_s",
            "peak_mb", "largest_force_difference"]
@@ -81,14 +80,9 @@ def main():
     args = parser.parse_args()
     rows = []
     for name, text, ranks in SCENES:
-        best = {}
-        for _ in range(args.repeat):
-            for label, program in ((args.label_before, args.before),
-                                   (args.label_after, args.after)):
-                with tempfile.TemporaryDirectory() as folder:
-                    result = run(program, text, ranks, folder)
-                if label not in best or result["wall_s"] < best[label]["wall_s"]:
-                    best[label] = result
+        programs = {args.label_before: args.before, args.label_after: args.after}
+        best = best_alternately(args.repeat, list(programs), lambda label, folder:
+                                run(programs[label], text, ranks, folder), key="wall_s")
         a, b = best[args.label_before]["forces"], best[args.label_after]["forces"]
         scale = max([abs(v) for row in a for v in row] + [1e-300])
         difference = max(abs(p - q) for ra, rb in zip(a, b) for p, q in zip(ra, rb)) / scale

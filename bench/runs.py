@@ -5,6 +5,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 
 # Parameters that make a run write its statistics into output/ and no
 # VTU: what a bench reads without the cost of writing the fields.
@@ -35,6 +36,21 @@ def run(command, ranks, folder, may_fail=False):
     if done.returncode != 0 and not may_fail:
         sys.exit(f"{' '.join(command)} failed:\n{output[-3000:]}")
     return output, float(re.findall(r"WALL ([0-9.]+)", output)[-1])
+
+
+def best_alternately(repeat, variants, run_variant, key="solve_s"):
+    """Runs each of @p variants @p repeat times, one variant after the
+    other (so that a slow spell of the machine hits them all), each run
+    in a new folder: @p run_variant(variant, folder) returns a dict of
+    results. Returns {variant: the run with the smallest @p key}."""
+    best = {}
+    for _ in range(repeat):
+        for variant in variants:
+            with tempfile.TemporaryDirectory() as folder:
+                result = run_variant(variant, folder)
+            if variant not in best or result[key] < best[variant][key]:
+                best[variant] = result
+    return best
 
 
 def solve_seconds(output):
