@@ -37,9 +37,22 @@ namespace FrictionalContact
           positions.push_back(position);
       }
     // In place, every entry is set again: the pattern holds no others but
-    // the identity's, which no entry changes unless it set it before.
-    for (const auto &[position, value] : entries)
-      matrix.set(position.first, position.second, value);
+    // the identity's, which no entry changes unless it set it before. One
+    // call per row (the entries come sorted by row), not per entry.
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (auto entry = entries.begin(); entry != entries.end();)
+      {
+        const types::global_dof_index row = entry->first.first;
+        columns.clear();
+        values.clear();
+        for (; entry != entries.end() && entry->first.first == row; ++entry)
+          {
+            columns.push_back(entry->first.second);
+            values.push_back(entry->second);
+          }
+        matrix.set(row, columns.size(), columns.data(), values.data());
+      }
     matrix.compress(VectorOperation::insert);
   }
 
