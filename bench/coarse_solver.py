@@ -24,7 +24,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, best_alternately, run as run_program, solve_seconds, print_row  # noqa: E402
+from runs import (NO_OUTPUT, best_alternately, chosen_scenes, increment_statistics,  # noqa: E402
+                  run as run_program, print_row)
 
 COLUMNS = ["scene", "dim", "ranks", "coarse_solver", "d", "newton_iterations",
            "krylov_iterations", "solve_s", "klu_over_mumps"]
@@ -43,13 +44,8 @@ def run(program, scene, solver, ranks, folder):
         f.write(f"include {ROOT}/parameters/{scene}.prm\n" + NO_OUTPUT +
                 f"subsection Linear solver\n  set AMG coarse solver = {solver}\nend\n")
     output, _ = run_program([program, "scene.prm"], ranks, folder)
-    return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
-                dim=int(re.findall(r"Scene: (\d)D", output)[-1]),
-                newton_iterations=sum(int(n) for n in
-                                      re.findall(r": (\d+) Newton iterations", output)),
-                krylov_iterations=sum(int(n) for n in
-                                      re.findall(r"(\d+) Krylov iterations", output)),
-                solve_s=solve_seconds(output))
+    return dict(increment_statistics(output),
+                dim=int(re.findall(r"Scene: (\d)D", output)[-1]))
 
 
 def main():
@@ -63,10 +59,7 @@ def main():
     parser.add_argument("--scenes", default=",".join(name for name, _ in SCENES),
                         help="the scenes to run, by name, separated by ','")
     args = parser.parse_args()
-    chosen = args.scenes.split(",")
-    unknown = set(chosen) - {name for name, _ in SCENES}
-    if unknown:
-        parser.error(f"no scene {', '.join(sorted(unknown))}")
+    chosen = chosen_scenes(parser, args.scenes, [name for name, _ in SCENES])
     rows = []
     for scene, ranks in (s for s in SCENES if s[0] in chosen):
         best = best_alternately(args.repeat, SOLVERS, lambda solver, folder:

@@ -17,14 +17,14 @@ usage: bench/finite_strain.py [--program build/contact] [--repeat 3]
 """
 import argparse
 import os
-import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from doc_tables import append_rows, write_tables  # noqa: E402
-from runs import NO_OUTPUT, best_alternately, run as run_program, solve_seconds, print_row  # noqa: E402
+from runs import (NO_OUTPUT, best_alternately, chosen_scenes, increment_statistics,  # noqa: E402
+                  run as run_program, print_row)
 
 COLUMNS = ["scene", "ranks", "kinematics", "d", "increments", "newton_iterations",
            "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
@@ -67,11 +67,7 @@ def run(program, scene, more, variant, ranks, folder):
     with open(os.path.join(folder, "scene.prm"), "w") as f:
         f.write(f"include {ROOT}/parameters/{scene}\n" + more + VARIANTS[variant] + NO_OUTPUT)
     output, _ = run_program([program, "scene.prm"], ranks, folder)
-    return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
-                increments=len(re.findall(r"^Increment \d+/", output, re.M)),
-                newton_iterations=sum(int(n) for n in
-                                      re.findall(r": (\d+) Newton iterations", output)),
-                solve_s=solve_seconds(output))
+    return increment_statistics(output)
 
 
 def main():
@@ -85,10 +81,7 @@ def main():
     parser.add_argument("--scenes", default=",".join(name for name, _, _, _ in SCENES),
                         help="the scenes to run, by name, separated by ','")
     args = parser.parse_args()
-    chosen = args.scenes.split(",")
-    unknown = set(chosen) - {name for name, _, _, _ in SCENES}
-    if unknown:
-        parser.error(f"no scene {', '.join(sorted(unknown))}")
+    chosen = chosen_scenes(parser, args.scenes, [name for name, _, _, _ in SCENES])
     rows = []
     for name, scene, ranks, more in (s for s in SCENES if s[0] in chosen):
         variants = [v for v in VARIANTS if v != WITHIN_NEWTON or name in PAIR_SCENES]

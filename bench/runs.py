@@ -53,6 +53,29 @@ def best_alternately(repeat, variants, run_variant, key="solve_s"):
     return best
 
 
+def increment_statistics(output):
+    """A run's unknowns d (on its last mesh), its increments, and the
+    Newton steps and Krylov iterations of its increment lines, summed;
+    with solve_s, its solve time (solve_seconds())."""
+    return dict(d=int(re.findall(r"d = (\d+)", output)[-1]),
+                increments=len(re.findall(r"^Increment \d+/", output, re.M)),
+                newton_iterations=sum(int(n) for n in
+                                      re.findall(r": (\d+) Newton iterations", output)),
+                krylov_iterations=sum(int(n) for n in
+                                      re.findall(r"(\d+) Krylov iterations", output)),
+                solve_s=solve_seconds(output))
+
+
+def chosen_scenes(parser, text, names):
+    """The scene names of --scenes @p text (separated by ','), or the
+    parser's error naming those not among @p names."""
+    chosen = text.split(",")
+    unknown = set(chosen) - set(names)
+    if unknown:
+        parser.error(f"no scene {', '.join(sorted(unknown))}")
+    return chosen
+
+
 def solve_seconds(output):
     """The solve time of a run from its output's summary line: the timer's
     Assembly, Elastic solve and Contact solve (no set-up, no output)."""
