@@ -32,8 +32,8 @@ namespace FrictionalContact
     , dof(GeometryInfo<dim>::vertices_per_cell)
     , u(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
-    , vertex_gradient(lobatto_values.n_quadrature_points,
-                      std::vector<Tensor<1, dim>>(GeometryInfo<dim>::vertices_per_cell))
+    , own_JxW(lobatto_values.n_quadrature_points)
+    , own_gradients(lobatto_values.n_quadrature_points * GeometryInfo<dim>::vertices_per_cell)
     , mean_divergence(fe.n_dofs_per_cell())
     , responses(lobatto_values.n_quadrature_points)
     , strain(lobatto_values.n_quadrature_points)
@@ -74,23 +74,42 @@ namespace FrictionalContact
     const unsigned int        n_vertices = scratch.dof.size();
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
     scratch.corner_points                = law.elastic().corner_points;
-    FEValues<dim>            &fe_values  = scratch.fe_values();
-    fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+    if (reference.kept())
+      {
+        const unsigned int c = cell->active_cell_index();
+        scratch.n_points     = reference.n_points(c);
+        scratch.JxW          = reference.JxW(c);
+        scratch.gradients    = reference.gradients(c);
+      }
+    else
+      {
+        FEValues<dim> &fe_values = scratch.fe_values();
+        fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+        scratch.n_points = fe_values.n_quadrature_points;
+        for (unsigned int q = 0; q < scratch.n_points; ++q)
+          {
+            scratch.own_JxW[q] = fe_values.JxW(q);
+            for (unsigned int a = 0; a < n_vertices; ++a)
+              scratch.own_gradients[q * n_vertices + a] = fe_values.shape_grad(a, q);
+          }
+        scratch.JxW       = scratch.own_JxW.data();
+        scratch.gradients = scratch.own_gradients.data();
+      }
     cell->get_dof_values(u_ghosted, scratch.u);
     scratch.finite_strain = law.elastic().finite_strain;
 
     std::fill(scratch.mean_divergence.begin(), scratch.mean_divergence.end(), 0.);
     double volume = 0, mean_dilatation = 0, mean_volume_ratio = 0;
     std::vector<SymmetricTensor<2, dim>> &strain = scratch.strain;
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    for (unsigned int q = 0; q < scratch.n_points; ++q)
       {
-        const double JxW = fe_values.JxW(q);
+        const double JxW = scratch.JxW[q];
         volume += JxW;
         Tensor<2, dim> gradient;
+        const Tensor<1, dim> *G = scratch.gradients_at(q);
         for (unsigned int a = 0; a < n_vertices; ++a)
           {
-            const Tensor<1, dim> &g = scratch.vertex_gradient[q][a] =
-              fe_values.shape_grad(a, q);
+            const Tensor<1, dim> &g = G[a];
             for (unsigned int c = 0; c < dim; ++c)
               {
                 gradient[c] += scratch.u(scratch.dof[a][c]) * g;
@@ -129,8 +148,9 @@ namespace FrictionalContact
             for (unsigned int c = 0; c < dim; ++c)
               displacement[a][c] = scratch.u(scratch.dof[a][c]);
           }
-        scratch.smallest_jacobian.keep(smallest_corner_jacobian<dim>(vertices, displacement),
-                                     cell->center());
+        const double jacobian = smallest_corner_jacobian<dim>(vertices, displacement);
+        if (jacobian < scratch.smallest_jacobian.value)
+          scratch.smallest_jacobian.keep(jacobian, cell->center());
       }
     for (double &d : scratch.mean_divergence)
       d /= volume;
@@ -142,7 +162,7 @@ namespace FrictionalContact
     const bool          b_bar     = law.elastic().mean_dilatation;
     const unsigned int  n_history = law.n_history_values();
     const double       *committed = history.values(cell);
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    for (unsigned int q = 0; q < scratch.n_points; ++q)
       if (!(scratch.jacobian[q] > 0))
         // Inverted: no stress (refuse_inverted_cells() stops the solve).
         scratch.responses[q] = MaterialResponse<dim>();
@@ -178,7 +198,7 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         {
           evaluate_cell(cell, u_ghosted, tangent != nullptr, scratch, nullptr);
-          for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
+          for (unsigned int q = 0; q < scratch.n_points; ++q)
             plastic_points += scratch.responses[q].plastic ? 1 : 0;
           cell_force_and_tangent(materials.of(cell->material_id()).elastic().mean_dilatation,
                                  tangent != nullptr,
@@ -241,7 +261,7 @@ namespace FrictionalContact
           // otherwise first whether the cell is elastic.
           evaluate_cell(cell, u_ghosted, !changed_cells_only, scratch, nullptr);
           bool elastic = true;
-          for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
+          for (unsigned int q = 0; q < scratch.n_points; ++q)
             {
               plastic_points += scratch.responses[q].plastic ? 1 : 0;
               elastic = elastic && !scratch.responses[q].plastic;
@@ -302,6 +322,24 @@ namespace FrictionalContact
 
   template <int dim>
   void
+  BodyResponse<dim>::new_mesh()
+  {
+    forget_tangent();
+    if (materials.all_linear())
+      return;
+    CellScratch &scratch = fresh_scratch();
+    reference.reinit(body.get_dof_handler(),
+                     scratch.gauss_values,
+                     scratch.lobatto_values,
+                     [this](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+                       return materials.of(cell->material_id()).elastic().corner_points;
+                     });
+  }
+
+
+
+  template <int dim>
+  void
   BodyResponse<dim>::commit(const Vector &u_ghosted)
   {
     // The matrix was the tangent of the history now replaced.
@@ -352,8 +390,7 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         {
           evaluate_cell(cell, u_ghosted, false, scratch, nullptr);
-          FEValues<dim>            &fe_values = scratch.fe_values();
-          const unsigned int        n_points  = fe_values.n_quadrature_points;
+          const unsigned int        n_points  = scratch.n_points;
           const MaterialModel<dim> &law       = materials.of(cell->material_id());
           const double             *committed = history.values(cell);
           CellState<dim>           &state     = states[cell->active_cell_index()];
@@ -364,14 +401,14 @@ namespace FrictionalContact
           double                     volume = 0, reference_volume = 0;
           for (unsigned int q = 0; q < n_points; ++q)
             {
-              volume += jacobian[q] * fe_values.JxW(q);
-              reference_volume += fe_values.JxW(q);
+              volume += jacobian[q] * scratch.JxW[q];
+              reference_volume += scratch.JxW[q];
             }
           state.jacobian = volume / reference_volume;
           for (unsigned int q = 0; q < n_points; ++q)
             {
               const MaterialResponse<dim> &r = scratch.responses[q];
-              const double weight = jacobian[q] * fe_values.JxW(q) / volume;
+              const double weight = jacobian[q] * scratch.JxW[q] / volume;
               SymmetricTensor<2, dim> stress       = r.stress;
               double                  out_of_plane = r.out_of_plane_stress;
               if (scratch.finite_strain)

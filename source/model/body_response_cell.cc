@@ -58,15 +58,17 @@ namespace FrictionalContact
     scratch.force                 = 0;
     if (with_tangent)
       {
-        scratch.matrix = 0;
-        scratch.contraction.reinit(scratch.fe_values().n_quadrature_points);
+        // B-bar adds its terms at each point before the contraction's.
+        if (mean_dilatation)
+          scratch.matrix = 0;
+        scratch.contraction.reinit(scratch.n_points);
       }
     double C[dim][dim][dim][dim];
-    for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
+    for (unsigned int q = 0; q < scratch.n_points; ++q)
       {
-        const double                 JxW = scratch.fe_values().JxW(q);
+        const double                 JxW = scratch.JxW[q];
         const MaterialResponse<dim> &r   = scratch.responses[q];
-        const auto                  &G   = scratch.vertex_gradient[q];
+        const Tensor<1, dim>        *G   = scratch.gradients_at(q);
         for (unsigned int a = 0; a < n_vertices; ++a)
           for (unsigned int c = 0; c < dim; ++c)
             {
@@ -110,11 +112,13 @@ namespace FrictionalContact
                    (div_bar[dof[a][c]] - G[a][c]) * volumetric[b][d]) *
                   JxW;
       }
-    if (with_tangent)
+    if (with_tangent && mean_dilatation)
       {
         scratch.contraction.add_to(dof, scratch.matrix);
         make_symmetric(scratch.matrix);
       }
+    else if (with_tangent)
+      scratch.contraction.symmetric_part_into(dof, scratch.matrix);
   }
 
 
@@ -139,14 +143,11 @@ namespace FrictionalContact
     const bool         pointwise  = scratch.volume_ratio == VolumeRatio::point;
     scratch.force                 = 0;
     if (with_tangent)
-      {
-        scratch.matrix = 0;
-        scratch.contraction.reinit(scratch.fe_values().n_quadrature_points);
-      }
+      scratch.contraction.reinit(scratch.n_points);
     // At most the 3^dim Gauss-Lobatto points; rows of h and g: one per
     // point for the point's volume ratio, one for the cell's mean.
     constexpr unsigned int max_points = dim == 2 ? 9 : 27;
-    const unsigned int     n_points   = scratch.fe_values().n_quadrature_points;
+    const unsigned int     n_points   = scratch.n_points;
     const unsigned int     n_rows     = !averages ? 0 : pointwise ? n_points : 1;
     AssertIndexRange(n_points, max_points + 1);
     double h[max_points][GeometryInfo<dim>::vertices_per_cell][dim];
@@ -154,11 +155,11 @@ namespace FrictionalContact
     std::fill(&h[0][0][0], &h[0][0][0] + n_rows * n_vertices * dim, 0.);
     std::fill(&g[0][0][0], &g[0][0][0] + n_rows * n_vertices * dim, 0.);
     double volume = 0;
-    for (const unsigned int q : scratch.fe_values().quadrature_point_indices())
+    for (unsigned int q = 0; q < n_points; ++q)
       {
-        const double                 JxW = scratch.fe_values().JxW(q);
+        const double                 JxW = scratch.JxW[q];
         const MaterialResponse<dim> &r   = scratch.responses[q];
-        const auto                  &G   = scratch.vertex_gradient[q];
+        const Tensor<1, dim>        *G   = scratch.gradients_at(q);
         const Tensor<2, dim>        &F   = scratch.deformation_gradient[q];
         const Tensor<2, dim>         S(r.stress);
         const Tensor<2, dim>         P = F * S;
@@ -212,10 +213,7 @@ namespace FrictionalContact
         scratch.contraction.add_point(q, JxW, G, A);
       }
     if (with_tangent)
-      {
-        scratch.contraction.add_to(dof, scratch.matrix);
-        make_symmetric(scratch.matrix);
-      }
+      scratch.contraction.symmetric_part_into(dof, scratch.matrix);
     if (with_tangent && averages)
       for (unsigned int row = 0; row < n_rows; ++row)
         for (unsigned int a = 0; a < n_vertices; ++a)

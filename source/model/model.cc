@@ -275,7 +275,7 @@ namespace FrictionalContact
   Model<dim>::assemble()
   {
     body->assemble();
-    response->forget_tangent();
+    response->new_mesh();
     held_by_contact_alone.clear();
     const std::map<std::string, types::material_id> &all = bodies;
     for (const types::material_id id : body->bodies_free_to_move())

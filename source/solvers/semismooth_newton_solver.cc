@@ -176,6 +176,11 @@ namespace FrictionalContact
                                                 comm);
     MeritWatch                progress;
     unsigned int              steps_blocked = 0;
+    // The force balance of the iterate before the current one, and whether
+    // the current one still lacks a nonlinear law's tangent
+    // (likely_last_step()).
+    double force_balance_before = 0;
+    bool   tangent_due          = false;
 
     for (unsigned int k = 0; k < this->stop.max_iterations; ++k)
       {
@@ -194,6 +199,11 @@ namespace FrictionalContact
             result.converged = true;
             result.loosened  = tolerance > this->stop.tolerance;
             break;
+          }
+        if (tangent_due)
+          {
+            problem.internal_force(du, work.K_du, true);
+            tangent_due = false;
           }
 
         // Sort the nodes by the augmented reactions of the current iterate;
@@ -241,6 +251,9 @@ namespace FrictionalContact
         remember_iterate(problem, du, r, work);
         unsigned int linear_iterations = 0;
         const double forcing_term      = forcing.current();
+        const bool   last_likely       = likely_last_step(tolerance, problem, du, work.K_du,
+                                                  result.residuals, force_balance_before,
+                                                  forcing_term, changes);
         try
           {
             linear_iterations =
@@ -266,7 +279,9 @@ namespace FrictionalContact
 
         work.inverted_cell.clear();
         const LineSearchStep step = search_along_step(
-          problem, conditions, c, sets.c_t, friction, mean_c, du, r, work);
+          problem, conditions, c, sets.c_t, friction, mean_c, du, r, work, !last_likely);
+        // A shortened step took the tangent where it stopped.
+        tangent_due = last_likely && step.t == 1;
         // A NaN merit would accept every step (its comparisons are false).
         if (std::isnan(step.merit_before) || std::isnan(step.merit_after))
           {
@@ -295,6 +310,7 @@ namespace FrictionalContact
         work.previous_du -= du;
         result.iterations = k + 1;
         result.last_step  = work.previous_du.l2_norm();
+        force_balance_before = result.residuals.force_balance;
         result.residuals  = admissible_residuals(
           problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);
         HistoryRow row{k + 1,

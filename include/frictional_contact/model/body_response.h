@@ -11,6 +11,7 @@
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/model/material.h>
 #include <frictional_contact/model/quadrature_history.h>
+#include <frictional_contact/model/reference_gradients.h>
 
 #include <array>
 #include <memory>
@@ -122,6 +123,12 @@ namespace FrictionalContact
     void
     forget_tangent();
 
+    /// After a new mesh (Model::assemble()): forgets the tangent and, where
+    /// some law is nonlinear (its cells evaluated at every Newton step),
+    /// takes the cells' ReferenceGradients.
+    void
+    new_mesh();
+
     /// Makes the history of u (an accepted increment's) the committed one.
     void
     commit(const Vector &u_ghosted);
@@ -157,6 +164,14 @@ namespace FrictionalContact
         return corner_points ? lobatto_values : gauss_values;
       }
 
+      /// grad N_a of the vertices' Q1 functions at point q (the shape
+      /// function of dof (a, c) is N_a e_c), a = 0, ..., n_vertices - 1.
+      const Tensor<1, dim> *
+      gradients_at(const unsigned int q) const
+      {
+        return gradients + q * GeometryInfo<dim>::vertices_per_cell;
+      }
+
       /// The Gauss points: those of the history (no law with history takes
       /// the Gauss-Lobatto points).
       QGauss<dim>                          gauss;
@@ -167,10 +182,16 @@ namespace FrictionalContact
       std::vector<std::array<unsigned int, dim>> dof;
       dealii::Vector<double>               u;
       std::vector<types::global_dof_index> dof_indices;
-      /// grad N_a of the vertices' Q1 functions at each point (the shape
-      /// function of dof (a, c) is N_a e_c), and the cell averages of
-      /// div phi_i.
-      std::vector<std::vector<Tensor<1, dim>>> vertex_gradient;
+      /// The cell's points: their number, JxW and the gradients of the
+      /// vertices' functions (gradients_at()), from the ReferenceGradients
+      /// where they are kept, else copied from the FEValues into own_JxW
+      /// and own_gradients.
+      unsigned int                n_points  = 0;
+      const double               *JxW       = nullptr;
+      const Tensor<1, dim>       *gradients = nullptr;
+      std::vector<double>         own_JxW;
+      std::vector<Tensor<1, dim>> own_gradients;
+      /// The cell averages of div phi_i.
       std::vector<double>                      mean_divergence;
       std::vector<MaterialResponse<dim>>       responses;
       /// The strains at the points.
@@ -240,5 +261,7 @@ namespace FrictionalContact
     mutable double element_force_size = 0;
     /// See fresh_scratch().
     mutable std::unique_ptr<CellScratch> scratch;
+    /// See new_mesh().
+    ReferenceGradients<dim> reference;
   };
 } // namespace FrictionalContact

@@ -454,15 +454,17 @@ namespace FrictionalContact
                       const double                      mean_c,
                       TrilinosWrappers::MPI::Vector    &du,
                       std::vector<Tensor<1, dim>>      &r,
-                      NewtonWorkspace<dim>             &work)
+                      NewtonWorkspace<dim>             &work,
+                      const bool                        tangent_at_step)
     {
-      // With a nonlinear law, also its tangent here for the next step; a
-      // step that inverts a cell (finite strain) is halved until it does
-      // not.
+      // With a nonlinear law, also its tangent here for the next step
+      // (unless @p tangent_at_step is false: a step that is likely the
+      // last); a step that inverts a cell (finite strain) is halved until
+      // it does not.
       for (unsigned int halvings = 0;; ++halvings)
         try
           {
-            problem.internal_force(du, work.K_du, /*with_tangent=*/true);
+            problem.internal_force(du, work.K_du, tangent_at_step);
             break;
           }
         catch (const InvertedCell &e)
@@ -511,6 +513,41 @@ namespace FrictionalContact
           problem.contact.apply(r, work.T_r);
         }
       return step;
+    }
+
+    /**
+     * Whether the Newton step from the current iterate (residuals @p now,
+     * the force balance @p force_balance_before at the iterate before it)
+     * will likely meet the tolerance, so that the line search need not
+     * take a nonlinear law's tangent at its end (at finite strain the
+     * tangent doubles the cost of the cells' pass): no node changed its
+     * condition, the force balance contracts, and after the step,
+     * predicted as quadratic convergence (the last contraction squared)
+     * or the forcing term's reduction, whichever is larger, it is a half
+     * of what meets() asks, while the other residuals already are. A
+     * wrong guess costs a force pass: the tangent is then taken at the
+     * next iteration, at the same iterate.
+     */
+    template <int dim>
+    bool
+    likely_last_step(const double                         tolerance,
+                     const IncrementalProblem<dim>       &problem,
+                     const TrilinosWrappers::MPI::Vector &du,
+                     const TrilinosWrappers::MPI::Vector &K_du,
+                     const Residuals                     &now,
+                     const double                         force_balance_before,
+                     const double                         forcing_term,
+                     const unsigned int                   changes)
+    {
+      if (problem.nonlinear == nullptr || changes > 0 || !(force_balance_before > 0))
+        return false;
+      const double contraction = now.force_balance / force_balance_before;
+      if (!(contraction < 0.5))
+        return false;
+      Residuals after = now;
+      after.force_balance =
+        now.force_balance * std::max(contraction * contraction, forcing_term);
+      return meets(0.5 * tolerance, problem, du, K_du, after);
     }
 
     /// Newton steps without progress after which the forcing term falls
