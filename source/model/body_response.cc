@@ -192,6 +192,9 @@ namespace FrictionalContact
     force = 0;
     if (tangent != nullptr)
       *tangent = 0;
+    // The forces of the cells that have positions (none constrained) by
+    // their local rows.
+    double *const force_values = tangent == nullptr ? positions.local_values(force) : nullptr;
     types::global_dof_index plastic_points = 0;
     double                  element_forces = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -208,6 +211,9 @@ namespace FrictionalContact
           if (tangent != nullptr)
             distribute.distribute_local_to_global(
               scratch.matrix, scratch.force, scratch.dof_indices, *tangent, force);
+          else if (force_values != nullptr &&
+                   positions.has(cell->active_cell_index(), scratch.dof_indices))
+            positions.add_to_vector(cell->active_cell_index(), scratch.force, force_values);
           else
             distribute.distribute_local_to_global(scratch.force,
                                                   scratch.dof_indices,
@@ -250,6 +256,7 @@ namespace FrictionalContact
     CellScratch       &scratch = fresh_scratch();
     FullMatrix<double> before(scratch.matrix.m(), scratch.matrix.n());
     force = 0;
+    double *const force_values = positions.local_values(force);
     types::global_dof_index plastic_points = 0;
     double                  element_forces = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -290,9 +297,12 @@ namespace FrictionalContact
           if (positions.has(c, scratch.dof_indices))
             {
               positions.add(c, scratch.matrix);
-              constraints.distribute_local_to_global(scratch.force,
-                                                     scratch.dof_indices,
-                                                     force);
+              if (force_values != nullptr)
+                positions.add_to_vector(c, scratch.force, force_values);
+              else
+                constraints.distribute_local_to_global(scratch.force,
+                                                       scratch.dof_indices,
+                                                       force);
             }
           else
             constraints.distribute_local_to_global(

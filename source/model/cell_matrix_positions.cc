@@ -1,6 +1,7 @@
 #include <frictional_contact/model/cell_matrix_positions.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_FEVector.h>
 
 #include <algorithm>
 
@@ -33,9 +34,11 @@ namespace FrictionalContact
     if (now == fingerprint)
       return;
     fingerprint = now;
+    matrix_rows = std::make_unique<Epetra_Map>(crs.RowMap());
     first.assign(now.n_active_cells, none);
     dof_hashes.assign(now.n_active_cells, 0);
     positions.clear();
+    local_rows.clear();
     if (fingerprint.values == nullptr)
       return;
 
@@ -91,6 +94,7 @@ namespace FrictionalContact
         first[cell->active_cell_index()]      = positions.size();
         dof_hashes[cell->active_cell_index()] = hash(dof_indices);
         positions.insert(positions.end(), cell_positions.begin(), cell_positions.end());
+        local_rows.insert(local_rows.end(), rows.begin(), rows.end());
       }
   }
 
@@ -113,6 +117,34 @@ namespace FrictionalContact
   }
 
 
+
+
+
+  template <int dim>
+  double *
+  CellMatrixPositions<dim>::local_values(TrilinosWrappers::MPI::Vector &vector) const
+  {
+    if (fingerprint.values == nullptr || !matrix_rows)
+      return nullptr;
+    Epetra_FEVector &values = vector.trilinos_vector();
+    if (!values.Map().SameAs(*matrix_rows))
+      return nullptr;
+    return values[0];
+  }
+
+
+
+  template <int dim>
+  void
+  CellMatrixPositions<dim>::add_to_vector(const unsigned int            active_cell_index,
+                                          const dealii::Vector<double> &cell_vector,
+                                          double                       *values) const
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const int             *row        = local_rows.data() + first[active_cell_index] / n_vertices;
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      values[row[i]] += cell_vector(i);
+  }
 
   template class CellMatrixPositions<2>;
   template class CellMatrixPositions<3>;

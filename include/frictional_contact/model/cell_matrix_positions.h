@@ -4,9 +4,14 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <Epetra_Map.h>
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace FrictionalContact
@@ -18,14 +23,18 @@ namespace FrictionalContact
    * assembled Trilinos matrix, so that a tangent assembled anew at every
    * Newton step (finite strain) adds its cell matrices there directly,
    * without Epetra's lookups of global rows and columns (a binary search
-   * per entry: more than the element kernel in a profile of Hertz 3D).
+   * per entry: more than the element kernel in a profile of Hertz 3D),
+   * and its cell forces into a vector of the same rows by their local
+   * indices (through AffineConstraints, each entry's lookups took a tenth
+   * of a 2D cell's force and tangent, by callgrind).
    * Only for the locally owned cells whose dofs are all rows of this rank
    * and none constrained; the others go through AffineConstraints as
    * before. A Q1 vertex's dim dofs are neighbours in every row that holds
    * one, so a position is kept per (row, vertex): dim 4^dim positions
-   * per cell (192 in 3D), and a hash of the cell's dofs. Owns those
-   * positions and the fingerprint of the mesh, constraints and matrix
-   * they were taken for; taken again when it changes.
+   * per cell (192 in 3D), the local index of each of the cell's rows,
+   * and a hash of the cell's dofs. Owns those and the fingerprint of the
+   * mesh, constraints and matrix they were taken for (with the matrix's
+   * rows); taken again when it changes.
    */
   template <int dim>
   class CellMatrixPositions
@@ -55,6 +64,18 @@ namespace FrictionalContact
      */
     void
     add(const unsigned int active_cell_index, const FullMatrix<double> &cell_matrix) const;
+
+    /// The local values of @p vector if its rows are those of the matrix
+    /// (same Epetra map), for add_to_vector(); else nullptr.
+    double *
+    local_values(TrilinosWrappers::MPI::Vector &vector) const;
+
+    /// Adds @p cell_vector (in the order of the cell's dof indices) to the
+    /// @p values that local_values() gave. Only where has().
+    void
+    add_to_vector(const unsigned int            active_cell_index,
+                  const dealii::Vector<double> &cell_vector,
+                  double                       *values) const;
 
   private:
     /// FNV-1a of the dof indices.
@@ -95,12 +116,16 @@ namespace FrictionalContact
     };
 
     Fingerprint fingerprint;
+    /// The matrix's rows (a copy: Epetra maps share their data).
+    std::unique_ptr<Epetra_Map> matrix_rows;
     /// Per active cell, the first of its positions, or none, and the
     /// hash of its dofs.
     std::vector<unsigned int>  first;
     std::vector<std::uint64_t> dof_hashes;
     /// Per cell with positions, for each local row i and vertex b, the
-    /// position of the column of b's first dof in row i.
+    /// position of the column of b's first dof in row i; and the local
+    /// index of each row (from first / n_vertices).
     std::vector<int> positions;
+    std::vector<int> local_rows;
   };
 } // namespace FrictionalContact
