@@ -4,6 +4,7 @@
 #include <frictional_contact/model/corner_jacobians.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace FrictionalContact
 {
@@ -80,6 +81,10 @@ namespace FrictionalContact
         scratch.n_points     = reference.n_points(c);
         scratch.JxW          = reference.JxW(c);
         scratch.gradients    = reference.gradients(c);
+        if (scratch.n_points == 0)
+          throw std::logic_error("BodyResponse: no reference gradients for a cell "
+                                 "this rank owns; new_mesh() must follow every "
+                                 "change of the mesh");
       }
     else
       {
@@ -335,6 +340,9 @@ namespace FrictionalContact
   BodyResponse<dim>::new_mesh()
   {
     forget_tangent();
+    // The positions serve the matrix of this mesh once update_tangent()
+    // has taken them (internal_force() adds by them before that).
+    positions = CellMatrixPositions<dim>();
     if (materials.all_linear())
       return;
     CellScratch &scratch = fresh_scratch();

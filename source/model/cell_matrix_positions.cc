@@ -118,8 +118,6 @@ namespace FrictionalContact
 
 
 
-
-
   template <int dim>
   double *
   CellMatrixPositions<dim>::local_values(TrilinosWrappers::MPI::Vector &vector) const

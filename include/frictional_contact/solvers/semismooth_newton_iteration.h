@@ -520,8 +520,8 @@ namespace FrictionalContact
      * the force balance @p force_balance_before at the iterate before it)
      * will likely meet the tolerance, so that the line search need not
      * take a nonlinear law's tangent at its end (at finite strain the
-     * tangent doubles the cost of the cells' pass): no node changed its
-     * condition, the force balance contracts, and after the step,
+     * tangent more than doubles the cost of the cells' pass): no node
+     * changed its condition, the force balance contracts, and after the step,
      * predicted as quadratic convergence (the last contraction squared)
      * or the forcing term's reduction, whichever is larger, it is a half
      * of what meets() asks, while the other residuals already are. A
