@@ -198,9 +198,26 @@ def finite_strain_block(root):
             f"small strain, its own mesh at {own['finite_over_small']}")
 
 
+def finite_strain_goal(root):
+    """Every scene's ratio of finite to small strain in the last run of
+    bench/finite_strain.py (a pair's with its geometry at every Newton
+    iterate), for the goals' table of doc/performance.md."""
+    latest = latest_by_scene(root, "finite-strain.csv", "kinematics")
+    within = "finite strain, pair geometry at every Newton iterate"
+    ratios = []
+    for scene, variants in latest.items():
+        row = variants.get(within) or variants.get("finite strain")
+        if row:
+            ratios.append(f"{scene} {row['finite_over_small']}")
+    if not ratios:
+        return "(bench/finite_strain.py has not run)"
+    return ", ".join(ratios)
+
+
 QUOTES = {
     "process-start": process_start,
     "finite-strain-block": finite_strain_block,
+    "finite-strain-goal": finite_strain_goal,
     "ironing-fold": ironing_fold,
     "step42-goals": step42_goals,
     "nearly-incompressible-errors": nearly_incompressible_errors,
