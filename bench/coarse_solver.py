@@ -6,9 +6,9 @@ this script. The Newton method's preconditioner refactors that level at
 every change of the node conditions and applies it at every Krylov
 iteration; on a mesh below ML's coarse size (2000 dofs) the level is the
 whole K + S. Records the Newton steps, the Krylov iterations and the solve
-time (the timer's Assembly, Elastic solve and Contact solve) and the ratio
-KLU / MUMPS: what the default <AMG coarse solver = auto> (KLU in 2D,
-MUMPS in 3D) is chosen from. Appends to doc/benchmarks/coarse-solver.csv
+time (the timer's Assembly, Increment start, Elastic solve and Contact
+solve) and the ratio KLU / MUMPS: what the default <AMG coarse solver =
+auto> (KLU in 2D, MUMPS in 3D) is chosen from. Appends to doc/benchmarks/coarse-solver.csv
 and rewrites the table of doc/performance.md ("The coarse solver").
 
 usage: bench/coarse_solver.py [--program build/contact] [--repeat 3]

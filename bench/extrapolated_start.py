@@ -7,8 +7,8 @@ scene runs both ways, alternately, best of --repeat, in one run of this
 script, with the semismooth Newton method and once with Kanno's
 accelerated primal-dual method; records the contact solver's iterations
 (Newton steps or primal-dual iterations), Krylov iterations and
-solve time (the timer's Assembly, Elastic solve and Contact solve), and
-the largest displacement at the end, which must agree (to 1e-6, or
+solve time (the timer's Assembly, Increment start, Elastic solve and
+Contact solve), and the largest displacement at the end, which must agree (to 1e-6, or
 round-off where the scene unloads). Appends to
 doc/benchmarks/extrapolated-start.csv and rewrites the table of
 doc/performance.md ("Where an increment starts").

@@ -3,8 +3,8 @@
 runs linear elastic at small strain, neo-Hookean at finite strain, and
 without contact (one elastic solve: the unit of time), alternately, best of
 --repeat, in one run of this script. Records the Newton steps and the
-solve time per increment (the timer's Assembly, Elastic solve and Contact
-solve: no set-up, no output) in elastic solves, and the ratio of the two
+solve time per increment (the timer's Assembly, Increment start, Elastic
+solve and Contact solve: no set-up, no output) in elastic solves, and the ratio of the two
 kinematics (the goal: at most 2). A scene with a pair of two bodies runs
 at finite strain with <Contact/Geometry between bodies> = fixed point
 and = every Newton iterate (the default). Appends to

@@ -12,8 +12,8 @@ points, which include the cells' corners (<Material/Quadrature>), and
 once without contact for the unit of time (one elastic
 solve on the same mesh), in one run of this script. Records the
 increments, cuts, Newton steps, Krylov iterations, solves of the pairs'
-geometry, and the solve time (the timer's Assembly, Elastic solve and
-Contact solve) in seconds and in elastic solves. Replaces the rows of
+geometry, and the solve time (the timer's Assembly, Increment start,
+Elastic solve and Contact solve) in seconds and in elastic solves. Replaces the rows of
 this mesh and quadrature in doc/benchmarks/ironing-3d-scale.csv (the
 others stay: the last run of each) and rewrites the table of doc/performance.md
 ("The 3D ironing at scale").

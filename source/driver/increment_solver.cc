@@ -99,6 +99,70 @@ namespace FrictionalContact
 
 
   template <int dim>
+  void
+  IncrementSolver<dim>::start_increment(Model<dim>                          &model,
+                                        const TrilinosWrappers::MPI::Vector &start,
+                                        const TrilinosWrappers::MPI::Vector &lifting,
+                                        const double                         load_factor,
+                                        IncrementOutcome<dim>               &outcome,
+                                        TimerOutput                         &timer)
+  {
+    // Timed alike for every law: small strain's p - K u_0 and pairs' basis
+    // are as much the increment's cost as a nonlinear law's tangent.
+    TimerOutput::Scope             scope(timer, "Increment start");
+    const ElasticBody<dim>        &body    = model.get_body();
+    const ContactOperator<dim>    &contact = model.get_contact();
+    TrilinosWrappers::MPI::Vector &load    = *outcome.load;
+    if (contact.has_pairs())
+      {
+        // The contact pairs were updated to this configuration: the basis
+        // in which their conditions are node-local, K_w and its AMG.
+        if (geometric)
+          {
+            linear_solver.set_geometric_multigrid(nullptr, nullptr);
+            mortar_cycle.reset();
+          }
+        // K_w of K as it is is what the first preconditioners on this mesh
+        // are built from and what linear laws solve with; a nonlinear
+        // law's solves take the tangent at the start, made below.
+        mortar = std::make_shared<MortarBasis<dim>>(
+          body, contact, !model.nonlinear() || !preconditioner_basis);
+      }
+    // p - f_int(u_0): for linear laws p - K u_0; nonlinear ones evaluate
+    // f_int(u_0) and the tangent there.
+    if (model.nonlinear())
+      {
+        // The first Newton step is linearised at u^l (the moved boundary
+        // alone squashes the cells beside it, and flows them).
+        outcome.response =
+          std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start, lifting);
+        load = outcome.response->start_force();
+      }
+    else
+      body.internal_force(start, load);
+    load.sadd(-1., load_factor, body.load_vector());
+    const bool rebuild = rebuild_for_tangent && !geometric;
+    rebuild_for_tangent = false;
+    if (rebuild)
+      krylov_per_step_after_build = 0;
+    if (rebuild && !contact.has_pairs())
+      {
+        // The tangent at the start is in K's matrix itself.
+        linear_solver.release();
+        initialize_on_body(body);
+      }
+    if (contact.has_pairs())
+      {
+        prepare_mortar_solves(body, rebuild);
+        mu_pi = 0;
+        const TrilinosWrappers::MPI::Vector load_in_u = load;
+        mortar->force_to_w(load_in_u, load);
+      }
+  }
+
+
+
+  template <int dim>
   IncrementOutcome<dim>
   IncrementSolver<dim>::solve(Model<dim>        &model,
                               const State<dim>  &state,
@@ -140,52 +204,7 @@ namespace FrictionalContact
     outcome.load = std::make_unique<TrilinosWrappers::MPI::Vector>(
       body.make_vector());
     TrilinosWrappers::MPI::Vector &load = *outcome.load;
-    if (contact.has_pairs())
-      {
-        // The contact pairs were updated to this configuration: the basis
-        // in which their conditions are node-local, K_w and its AMG.
-        if (geometric)
-          {
-            linear_solver.set_geometric_multigrid(nullptr, nullptr);
-            mortar_cycle.reset();
-          }
-        // K_w of K as it is is what the first preconditioners on this mesh
-        // are built from and what linear laws solve with; a nonlinear
-        // law's solves take the tangent at the start, made below.
-        mortar = std::make_shared<MortarBasis<dim>>(
-          body, contact, !model.nonlinear() || !preconditioner_basis);
-      }
-    // p - f_int(u_0): for linear laws p - K u_0; nonlinear ones evaluate
-    // f_int(u_0) and the tangent there.
-    if (model.nonlinear())
-      {
-        TimerOutput::Scope scope(timer, "Assembly");
-        // The first Newton step is linearised at u^l (the moved boundary
-        // alone squashes the cells beside it, and flows them).
-        outcome.response =
-          std::make_unique<IncrementResponse<dim>>(model, mortar.get(), start, lifting);
-        load = outcome.response->start_force();
-      }
-    else
-      body.internal_force(start, load);
-    load.sadd(-1., load_factor, body.load_vector());
-    const bool rebuild = rebuild_for_tangent && !geometric;
-    rebuild_for_tangent = false;
-    if (rebuild)
-      krylov_per_step_after_build = 0;
-    if (rebuild && !contact.has_pairs())
-      {
-        // The tangent at the start is in K's matrix itself.
-        linear_solver.release();
-        initialize_on_body(body);
-      }
-    if (contact.has_pairs())
-      {
-        prepare_mortar_solves(body, rebuild);
-        mu_pi = 0;
-        const TrilinosWrappers::MPI::Vector load_in_u = load;
-        mortar->force_to_w(load_in_u, load);
-      }
+    start_increment(model, start, lifting, load_factor, outcome, timer);
 
     outcome.du_solved       = body.make_vector();
     SolveStatistics &result = outcome.statistics;

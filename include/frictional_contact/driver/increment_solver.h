@@ -254,6 +254,22 @@ namespace FrictionalContact
     };
 
     /**
+     * What an increment needs before its solve, timed as "Increment start"
+     * for every law: the pairs' basis, p - f_int(u_0) into the load of
+     * @p outcome (a nonlinear law's IncrementResponse: its force and
+     * tangent at @p start, linearised along @p lifting), the
+     * preconditioner built again on the tangent where due, and the pairs'
+     * solves. Collective.
+     */
+    void
+    start_increment(Model<dim>                          &model,
+                    const TrilinosWrappers::MPI::Vector &start,
+                    const TrilinosWrappers::MPI::Vector &lifting,
+                    const double                         load_factor,
+                    IncrementOutcome<dim>               &outcome,
+                    TimerOutput                         &timer);
+
+    /**
      * Takes the gaps and frames of @p contact at the iterate (start + du)
      * into @p problem and expresses @p r in the new frames: the obstacle's
      * of the candidates that follow the configuration (gaps linearised
