@@ -91,12 +91,9 @@ namespace FrictionalContact
         FEValues<dim> &fe_values = scratch.fe_values();
         fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
         scratch.n_points = fe_values.n_quadrature_points;
-        for (unsigned int q = 0; q < scratch.n_points; ++q)
-          {
-            scratch.own_JxW[q] = fe_values.JxW(q);
-            for (unsigned int a = 0; a < n_vertices; ++a)
-              scratch.own_gradients[q * n_vertices + a] = fe_values.shape_grad(a, q);
-          }
+        ReferenceGradients<dim>::copy(fe_values,
+                                      scratch.own_JxW.data(),
+                                      scratch.own_gradients.data());
         scratch.JxW       = scratch.own_JxW.data();
         scratch.gradients = scratch.own_gradients.data();
       }
@@ -216,13 +213,8 @@ namespace FrictionalContact
           if (tangent != nullptr)
             distribute.distribute_local_to_global(
               scratch.matrix, scratch.force, scratch.dof_indices, *tangent, force);
-          else if (force_values != nullptr &&
-                   positions.has(cell->active_cell_index(), scratch.dof_indices))
-            positions.add_to_vector(cell->active_cell_index(), scratch.force, force_values);
           else
-            distribute.distribute_local_to_global(scratch.force,
-                                                  scratch.dof_indices,
-                                                  force);
+            add_cell_force(cell->active_cell_index(), scratch, distribute, force, force_values);
         }
     force.compress(VectorOperation::add);
     if (tangent != nullptr)
@@ -283,9 +275,7 @@ namespace FrictionalContact
             {
               cell_force_and_tangent(b_bar, false, scratch);
               element_forces += scratch.force.norm_sqr();
-              constraints.distribute_local_to_global(scratch.force,
-                                                     scratch.dof_indices,
-                                                     force);
+              add_cell_force(c, scratch, constraints, force, force_values);
               continue;
             }
           if (changed_cells_only)
@@ -302,12 +292,7 @@ namespace FrictionalContact
           if (positions.has(c, scratch.dof_indices))
             {
               positions.add(c, scratch.matrix);
-              if (force_values != nullptr)
-                positions.add_to_vector(c, scratch.force, force_values);
-              else
-                constraints.distribute_local_to_global(scratch.force,
-                                                       scratch.dof_indices,
-                                                       force);
+              add_cell_force(c, scratch, constraints, force, force_values);
             }
           else
             constraints.distribute_local_to_global(
@@ -331,6 +316,22 @@ namespace FrictionalContact
   {
     elastic_cells.clear();
     tangent_at.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::add_cell_force(const unsigned int               active_cell_index,
+                                    const CellScratch               &scratch,
+                                    const AffineConstraints<double> &constraints,
+                                    Vector                          &force,
+                                    double *const                    force_values) const
+  {
+    if (force_values != nullptr && positions.has(active_cell_index, scratch.dof_indices))
+      positions.add_to_vector(active_cell_index, scratch.force, force_values);
+    else
+      constraints.distribute_local_to_global(scratch.force, scratch.dof_indices, force);
   }
 
 

@@ -27,13 +27,24 @@ namespace FrictionalContact
           FEValues<dim> &fe_values = corner_points(cell) ? lobatto : gauss;
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
           const std::size_t first = first_point[cell->active_cell_index()];
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              weights[first + q] = fe_values.JxW(q);
-              for (unsigned int a = 0; a < n_vertices; ++a)
-                vertex_gradients[n_vertices * (first + q) + a] = fe_values.shape_grad(a, q);
-            }
+          copy(fe_values, weights.data() + first, vertex_gradients.data() + n_vertices * first);
         }
+  }
+
+
+
+  template <int dim>
+  void
+  ReferenceGradients<dim>::copy(const FEValues<dim> &fe_values,
+                                double              *JxW,
+                                Tensor<1, dim>      *gradients)
+  {
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        JxW[q] = fe_values.JxW(q);
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          gradients[n_vertices * q + a] = fe_values.shape_grad(a, q);
+      }
   }
 
   template class ReferenceGradients<2>;

@@ -241,6 +241,16 @@ namespace FrictionalContact
     CellScratch &
     fresh_scratch() const;
 
+    /// Adds the cell force of @p scratch to @p force: by local row where
+    /// @p force_values (CellMatrixPositions::local_values()) is given and
+    /// the cell has positions, else through @p constraints.
+    void
+    add_cell_force(const unsigned int               active_cell_index,
+                   const CellScratch               &scratch,
+                   const AffineConstraints<double> &constraints,
+                   Vector                          &force,
+                   double *const                    force_values) const;
+
     /// Throws an InvertedCell on every rank if some rank's @p scratch met
     /// det F <= 0. Collective.
     void

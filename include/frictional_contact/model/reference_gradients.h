@@ -43,6 +43,12 @@ namespace FrictionalContact
            const std::function<bool(const typename DoFHandler<dim>::active_cell_iterator &)>
              &corner_points);
 
+    /// Copies the JxW and the gradients of the vertices' functions of the
+    /// cell @p fe_values was last reinit() on into @p JxW (one per point)
+    /// and @p gradients (entry q n_vertices + a): the tables' layout.
+    static void
+    copy(const FEValues<dim> &fe_values, double *JxW, Tensor<1, dim> *gradients);
+
     /// Whether the tables are kept.
     bool
     kept() const
