@@ -2,54 +2,84 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <cstddef>
+
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/pair_couplings.h>
 
 namespace FrictionalContact
 {
+  namespace
+  {
+    // The (row, column) of a position or of an entry.
+    const Couplings::key_type &
+    key_of(const Couplings::key_type &position)
+    {
+      return position;
+    }
+
+    const Couplings::key_type &
+    key_of(const Couplings::value_type &entry)
+    {
+      return entry.first;
+    }
+  } // namespace
+
+
+
   void
   CouplingMatrix::take(const IndexSet  &owned,
                        const MPI_Comm   comm,
                        const Couplings &entries,
                        const bool       identity)
   {
-    const bool in_place = matrix.m() > 0 && matrix.locally_owned_range_indices() == owned &&
-                          positions.size() == entries.size() &&
-                          std::equal(entries.begin(), entries.end(), positions.begin(),
-                                     [](const auto &entry, const auto &position) {
-                                       return entry.first == position;
-                                     });
+    // In place where the pattern already holds every entry (both are
+    // sorted by row and column): within an increment the couplings mostly
+    // keep their positions or gain some as slave nodes reach new segments.
+    const bool in_place =
+      matrix.m() > 0 && matrix.locally_owned_range_indices() == owned &&
+      std::includes(positions.begin(), positions.end(), entries.begin(), entries.end(),
+                    [](const auto &a, const auto &b) { return key_of(a) < key_of(b); });
     if (Utilities::MPI::logical_or(!in_place, comm))
       {
+        // The new pattern keeps the old positions too (on the same rows),
+        // so that couplings that come and go do not remake it each time.
+        if (matrix.m() == 0 || matrix.locally_owned_range_indices() != owned)
+          positions.clear();
+        const auto kept = static_cast<std::ptrdiff_t>(positions.size());
+        for (const auto &[position, value] : entries)
+          positions.push_back(position);
+        std::inplace_merge(positions.begin(), positions.begin() + kept, positions.end());
+        positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
         TrilinosWrappers::SparsityPattern pattern(owned, owned, owned, comm);
         if (identity)
           for (const auto i : owned)
             pattern.add(i, i);
-        for (const auto &[position, value] : entries)
-          pattern.add(position.first, position.second);
+        for (const auto &[row, column] : positions)
+          pattern.add(row, column);
         pattern.compress();
         matrix.reinit(pattern);
         if (identity)
           for (const auto i : owned)
             matrix.set(i, i, 1.);
-        positions.clear();
-        for (const auto &[position, value] : entries)
-          positions.push_back(position);
       }
-    // In place, every entry is set again: the pattern holds no others but
-    // the identity's, which no entry changes unless it set it before. One
-    // call per row (the entries come sorted by row), not per entry.
+    // Every position is set again: to its entry's value, or where it has
+    // none now to the identity's or zero. One call per row, not per entry.
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for (auto entry = entries.begin(); entry != entries.end();)
+    auto                                 entry = entries.begin();
+    for (auto position = positions.begin(); position != positions.end();)
       {
-        const types::global_dof_index row = entry->first.first;
+        const types::global_dof_index row = position->first;
         columns.clear();
         values.clear();
-        for (; entry != entries.end() && entry->first.first == row; ++entry)
+        for (; position != positions.end() && position->first == row; ++position)
           {
-            columns.push_back(entry->first.second);
-            values.push_back(entry->second);
+            const bool has_entry = entry != entries.end() && entry->first == *position;
+            columns.push_back(position->second);
+            values.push_back(has_entry                              ? (entry++)->second :
+                             identity && position->first == position->second ? 1. :
+                                                                       0.);
           }
         matrix.set(row, columns.size(), columns.data(), values.data());
       }

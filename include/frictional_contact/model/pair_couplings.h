@@ -24,11 +24,13 @@ namespace FrictionalContact
 
   /**
    * A Trilinos matrix of Couplings (rows: the locally owned dofs), made
-   * again as they change: where every rank's entries sit where they sat
-   * the last time, their new values are set in the matrix's pattern
-   * instead of a new pattern being made (the geometry's matrices of a pair
-   * whose rows follow the Newton iterates keep their pattern while no
-   * slave node changes segments). Owns the matrix and those positions.
+   * again as they change: where every rank's pattern already holds the
+   * new entries, their values are set in it, and the positions without an
+   * entry now to zero (or the identity's one), instead of a new pattern
+   * being made; a new pattern keeps the old positions too. The geometry's
+   * matrices of a pair whose rows follow the Newton iterates so keep their
+   * pattern while slave nodes move among segments they have touched. Owns
+   * the matrix and its positions.
    */
   class CouplingMatrix
   {
