@@ -76,10 +76,9 @@ namespace FrictionalContact
         for (; position != positions.end() && position->first == row; ++position)
           {
             const bool has_entry = entry != entries.end() && entry->first == *position;
+            const bool diagonal  = position->first == position->second;
             columns.push_back(position->second);
-            values.push_back(has_entry                              ? (entry++)->second :
-                             identity && position->first == position->second ? 1. :
-                                                                       0.);
+            values.push_back(has_entry ? (entry++)->second : identity && diagonal ? 1. : 0.);
           }
         matrix.set(row, columns.size(), columns.data(), values.data());
       }
