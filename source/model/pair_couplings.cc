@@ -36,15 +36,16 @@ namespace FrictionalContact
     // In place where the pattern already holds every entry (both are
     // sorted by row and column): within an increment the couplings mostly
     // keep their positions or gain some as slave nodes reach new segments.
+    const bool same_rows = matrix.m() > 0 && matrix.locally_owned_range_indices() == owned;
     const bool in_place =
-      matrix.m() > 0 && matrix.locally_owned_range_indices() == owned &&
+      same_rows &&
       std::includes(positions.begin(), positions.end(), entries.begin(), entries.end(),
                     [](const auto &a, const auto &b) { return key_of(a) < key_of(b); });
     if (Utilities::MPI::logical_or(!in_place, comm))
       {
         // The new pattern keeps the old positions too (on the same rows),
         // so that couplings that come and go do not remake it each time.
-        if (matrix.m() == 0 || matrix.locally_owned_range_indices() != owned)
+        if (!same_rows)
           positions.clear();
         const auto kept = static_cast<std::ptrdiff_t>(positions.size());
         for (const auto &[position, value] : entries)
