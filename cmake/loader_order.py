@@ -19,6 +19,8 @@ among the others, and so do the BLAS and LAPACK, chosen at run time
 usage: loader_order.py <deal.II library> [--minimum 200]
 """
 import argparse
+import concurrent.futures
+import os
 import re
 import subprocess
 import sys
@@ -73,7 +75,10 @@ def main():
     parser.add_argument("--minimum", type=int, default=200)
     args = parser.parse_args()
     libraries = loaded_libraries(args.deal_ii)
-    defined = {library: definitions(library) for library in libraries}
+    # The runs of nm and readelf, one per library, are independent: on
+    # every core (configure waits for them before anything compiles).
+    with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        defined = dict(zip(libraries, pool.map(definitions, libraries)))
     # How many libraries define each symbol, and whether all of them weakly.
     count, all_weak = {}, {}
     for symbols in defined.values():
@@ -83,7 +88,8 @@ def main():
     movable = [library for library in libraries
                if not RUN_TIME_CHOICE.search(library)
                and all(count[name] == 1 or all_weak[name] for name in defined[library])]
-    weighed = [(symbol_relocations(library), library) for library in movable]
+    with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        weighed = list(zip(pool.map(symbol_relocations, movable), movable))
     first = [library for relocations, library in sorted(weighed, key=lambda w: -w[0])
              if relocations >= args.minimum]
     # Then every other library in the loader's own order, so that no two

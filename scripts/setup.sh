@@ -3,8 +3,9 @@
 # then configures and builds it in ./build (Release). Safe to run again:
 # it only does what is left to do. Both README commands start with it.
 # usage: setup.sh [--tests]
-#   --tests  also builds the programs only the tests run (the sanitized
-#            program of the fuzz test, about 90 s on 2 cores)
+#   --tests  also builds the programs only the tests run: the test
+#            programs (tests/*.cc) and the program built with the
+#            sanitizers (bench/first_hour.py times both commands)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 with_tests=false
@@ -33,9 +34,10 @@ jobs="$(nproc)"
 if [ ! -f build/CMakeCache.txt ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type"
 fi
-cmake --build build -j "$jobs"
 if $with_tests; then
-  cmake --build build -j "$jobs" --target contact_sanitized
+  cmake --build build -j "$jobs" --target all test_programs contact_sanitized
+else
+  cmake --build build -j "$jobs"
 fi
 if ! command -v pvbatch > /dev/null || ! command -v Xvfb > /dev/null; then
   echo "-- optional: ParaView pictures (scripts/render_contact.py, scripts/make_gallery.sh)"

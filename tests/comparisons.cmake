@@ -506,9 +506,9 @@ contact_compare_tables(lame_3d_multigrid.same_displacement
 contact_same_forces(sliding_pair_friction_multigrid sliding_pair_friction_multigrid
   sliding_pair_friction sliding_pair_friction)
 contact_compare_statistics(hertz_two_bodies_3d_multigrid.same_forces
-  "hertz_two_bodies_3d_multigrid.mpirun=2;ball_on_plate_scene"
+  "hertz_two_bodies_3d_multigrid.mpirun=2;hertz_two_bodies_3d.mpirun=2"
   ${CMAKE_CURRENT_BINARY_DIR}/hertz_two_bodies_3d_multigrid.mpirun=2/output-hertz_two_bodies_3d_multigrid/statistics
-  ${CMAKE_CURRENT_BINARY_DIR}/scenes/ball_on_plate/2/output-ball-on-plate/statistics 1e-8)
+  ${CMAKE_CURRENT_BINARY_DIR}/hertz_two_bodies_3d.mpirun=2/output-hertz_two_bodies_3d/statistics 1e-8)
 
 # Two bodies from one Gmsh file (their physical surfaces or volumes named
 # base and block) against the same bodies from Geometry/Stacked blocks:

@@ -105,10 +105,10 @@ set_tests_properties(pair_rotation_newton.sanitized.mpirun=2 PROPERTIES
 add_script_test(grown_increments grown_increments 1)
 
 # 3D ironing with the die a rigid tool from a surface mesh, on 2 ranks: its
-# forces per unit width against the 2D scene's on the same cells (its run
-# scenes/ironing_2d.mpirun=2 sets up the fixture, scenes.cmake;
-# check_ironing_3d.py), drag to 0.01 and press to 0.04 of the largest 2D
-# press, and any further bounds of check_ironing_3d.py in ARGN.
+# forces per unit width against the 2D scene's on the same cells
+# (ironing_2d_friction, cells of 0.5; check_ironing_3d.py), drag to 0.01
+# and press to 0.04 of the largest 2D press, and any further bounds of
+# check_ironing_3d.py in ARGN.
 function(add_ironing_3d_test _name)
   set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_name})
   configure_file(${_name}.prm ${_directory}/${_name}.prm @ONLY)
@@ -120,16 +120,17 @@ function(add_ironing_3d_test _name)
     FIXTURES_SETUP ${_name} ENVIRONMENT "${_environment}" PROCESSORS 2)
   add_test(NAME ${_name}.against_2d
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_ironing_3d.py
-            ${CMAKE_CURRENT_BINARY_DIR}/scenes/ironing_2d/2/output-ironing-2d/statistics
+            ${CMAKE_CURRENT_BINARY_DIR}/ironing_2d_friction/output-ironing_2d_friction/statistics
             ${_directory}/output-${_name}/statistics --drag 0.01 --press 0.04 ${ARGN})
   set_tests_properties(${_name}.against_2d PROPERTIES
-    FIXTURES_REQUIRED "${_name};ironing_2d_scene")
+    FIXTURES_REQUIRED "${_name};ironing_2d_friction")
 endfunction()
 
 # The 2D ironing scene's line search judges a short step with the reactions
 # the nonlinear residual gives along it: no sliding increment crawls (at
-# most 316 Krylov iterations per increment measured on 2 ranks; 1,838 with
-# the reactions interpolated alone, whose merit rose along short steps).
+# most 140 Krylov iterations per increment measured on 2 ranks as shipped,
+# 316 on cells of 0.5, and 1,838 there with the reactions interpolated
+# alone, whose merit rose along short steps).
 add_test(NAME ironing_2d.krylov_per_increment
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
     ${CMAKE_CURRENT_BINARY_DIR}/scenes/ironing_2d/2/output-ironing-2d/statistics

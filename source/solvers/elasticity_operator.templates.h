@@ -1,3 +1,8 @@
+// The definitions of ElasticityOperator's members, instantiated by
+// elasticity_operator_2d.cc and elasticity_operator_3d.cc (CMakeLists.txt
+// says why two units).
+#pragma once
+
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/tools.h>
 
@@ -220,8 +225,4 @@ namespace FrictionalContact
     return matrices;
   }
 
-  template class ElasticityOperator<2, double>;
-  template class ElasticityOperator<3, double>;
-  template class ElasticityOperator<2, float>;
-  template class ElasticityOperator<3, float>;
 } // namespace FrictionalContact
