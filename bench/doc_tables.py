@@ -32,6 +32,7 @@ import re
 import sys
 
 from doc_table_builders import TABLES, latest_by_scene, rows, thousands
+import doc_table_scenes
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -223,7 +224,9 @@ QUOTES = {
     "nearly-incompressible-errors": nearly_incompressible_errors,
     "multigrid-1.6m": multigrid_largest_ml,
     "multigrid-1.6m-against-ml": multigrid_against_ml,
+    **doc_table_scenes.QUOTES,
 }
+TABLES = {**TABLES, **doc_table_scenes.TABLES}
 
 MARKED = re.compile(r"(<!-- table: ([a-z0-9.-]+) -->\n)(.*?)\n?(<!-- end table -->)", re.S)
 QUOTED = re.compile(r"(<!-- quote: ([a-z0-9.-]+) -->)(.*?)(<!-- end quote -->)", re.S)

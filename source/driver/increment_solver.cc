@@ -296,14 +296,42 @@ namespace FrictionalContact
 
 
   template <int dim>
+  double
+  IncrementSolver<dim>::basis_change_in_preconditioner(const ElasticBody<dim> &body) const
+  {
+    // x: a fixed field of every dof (the same on any rank count), zero at
+    // the held ones.
+    TrilinosWrappers::MPI::Vector x = body.make_vector(), change = x, mapped = x;
+    for (const types::global_dof_index i : x.locally_owned_elements())
+      x[i] = std::sin(1. + 0.618 * i);
+    x.compress(VectorOperation::insert);
+    body.get_constraints().set_zero(x);
+    // (K_w - K_w,old) x, and what the preconditioner makes of it.
+    mortar->stiffness().vmult(change, x);
+    preconditioner_matrix->vmult(mapped, x);
+    change -= mapped;
+    linear_solver.precondition_stiffness(mapped, change);
+    const double relative = mapped.l2_norm() / x.l2_norm();
+    return relative;
+  }
+
+
+
+  template <int dim>
   void
   IncrementSolver<dim>::prepare_mortar_solves(const ElasticBody<dim> &body,
-                                              const bool              rebuild)
+                                              bool                    rebuild)
   {
+    // Built again on K_w as it is (a copy) where the basis moved far
+    // from the one the AMG was built in (the geometric multigrid's cycle
+    // is made with each new basis below).
+    if (preconditioner_basis && !rebuild && !geometric &&
+        basis_change_in_preconditioner(body) > largest_basis_change)
+      rebuild = true;
     if (preconditioner_basis && !rebuild)
-      // The AMG of the first increment on this mesh still serves: the
-      // mortar rows change little from one increment to the next
-      // (doc/performance.md, "Two bodies").
+      // The AMG of an earlier increment on this mesh still serves: the
+      // mortar rows changed little since (doc/performance.md, "Two
+      // bodies").
       linear_solver.replace_matrix(mortar->stiffness(),
                                    mortar->volumetric_split());
     else
@@ -322,8 +350,9 @@ namespace FrictionalContact
             tangent_copy.copy_from(mortar->stiffness().matrix("the preconditioner"));
             tangent_copy_operator = std::make_unique<AssembledStiffness>(tangent_copy);
           }
-        linear_solver.initialize(rebuild ? *tangent_copy_operator :
-                                           mortar->initial_stiffness(),
+        preconditioner_matrix =
+          rebuild ? tangent_copy_operator.get() : &mortar->initial_stiffness();
+        linear_solver.initialize(*preconditioner_matrix,
                                  mortar->modes_to_w(body.rigid_body_modes()),
                                  0.,
                                  mortar->volumetric_split());
@@ -420,6 +449,8 @@ namespace FrictionalContact
       }
     if (solver.method->needs_smallest_eigenvalue())
       problem.smallest_eigenvalue_K = smallest_eigenvalue_of_K(model, timer);
+    if (mortar)
+      problem.master_stiffness = mortar->master_stiffness(model.get_body(), contact);
     const SolveStatistics elastic = result;
     {
       TimerOutput::Scope scope(timer, "Contact solve");

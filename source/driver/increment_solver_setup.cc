@@ -15,6 +15,7 @@ namespace FrictionalContact
     const ContactOperator<dim> &contact = model.get_contact();
     mortar.reset();
     preconditioner_basis.reset();
+    preconditioner_matrix = nullptr;
     krylov_per_step_after_build = 0;
     rebuild_for_tangent         = false;
     linear_solver.set_geometric_multigrid(nullptr, nullptr);

@@ -1,6 +1,8 @@
 #include <frictional_contact/model/mortar_basis.h>
 #include <frictional_contact/model/pair_couplings.h>
 
+#include <limits>
+
 
 namespace FrictionalContact
 {
@@ -17,6 +19,58 @@ namespace FrictionalContact
     const auto E = PairCouplings<dim>(contact).basis();
     basis.take(owned, comm, E, true);
     return Utilities::MPI::sum(E.size(), comm) == 0;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  MortarBasis<dim>::master_stiffness(const ElasticBody<dim>     &body,
+                                     const ContactOperator<dim> &contact) const
+  {
+    const VolumetricSplit                 volumetric = body.volumetric_split();
+    const TrilinosWrappers::SparseMatrix &K =
+      volumetric.reduced_stiffness != nullptr ?
+        *volumetric.reduced_stiffness :
+        body.stiffness().matrix("contact pairs (<Contact/Pairs>)");
+    const unsigned int  n = contact.n_local();
+    std::vector<double> stiffness(n, std::numeric_limits<double>::infinity());
+
+    // E = Q - I: slave rows, master columns. a_S: D_jj on slave node j's
+    // dofs; A = E^T a_S (A_l = sum_j D_jj P_jl = sum_j M_jl).
+    Vector slave_area = body.make_vector(), master_area = body.make_vector();
+    for (unsigned int j = 0; j < n; ++j)
+      if (contact.acts_between_bodies(j))
+        for (unsigned int c = 0; c < dim; ++c)
+          slave_area[contact.dof(j, c)] = contact.nodal_area(j);
+    slave_area.compress(VectorOperation::insert);
+    basis.matrix.Tvmult(master_area, slave_area);
+    master_area -= slave_area;
+
+    // K_ll / A_l at the master dofs, then sum_l P_jl K_ll / A_l at the
+    // slave dofs (E of it).
+    Vector per_area = body.make_vector(), seen = body.make_vector();
+    for (const types::global_dof_index i : body.locally_owned_dofs())
+      if (master_area[i] > 0)
+        per_area[i] = K.diag_element(i) / master_area[i];
+    per_area.compress(VectorOperation::insert);
+    basis.matrix.vmult(seen, per_area);
+    seen -= per_area;
+
+    for (unsigned int j = 0; j < n; ++j)
+      if (contact.acts_between_bodies(j))
+        {
+          Tensor<1, dim> e;
+          e[0]                    = 1;
+          const Tensor<1, dim> nj = contact.to_cartesian(j, e);
+          double               m  = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            m += nj[c] * nj[c] * seen[contact.dof(j, c)];
+          m *= contact.nodal_area(j);
+          if (m > 0)
+            stiffness[j] = m;
+        }
+    return stiffness;
   }
 
 

@@ -1,8 +1,26 @@
 #include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/solvers/contact_problem.h>
 
+#include <cmath>
+
 namespace FrictionalContact
 {
+  template <int dim>
+  std::vector<double>
+  contact_stiffness(const IncrementalProblem<dim> &problem, std::vector<double> c)
+  {
+    if (!problem.master_stiffness.empty())
+      for (unsigned int j = 0; j < c.size(); ++j)
+        {
+          const double m = problem.master_stiffness[j];
+          if (c[j] > 0 && m > 0 && std::isfinite(m))
+            c[j] = c[j] * m / (c[j] + m);
+        }
+    return c;
+  }
+
+
+
   template <int dim>
   Residuals
   compute_residuals(const IncrementalProblem<dim>       &problem,
@@ -78,4 +96,8 @@ namespace FrictionalContact
   worst_places<2>(const IncrementalProblem<2> &, const TrilinosWrappers::MPI::Vector &);
   template std::string
   worst_places<3>(const IncrementalProblem<3> &, const TrilinosWrappers::MPI::Vector &);
+  template std::vector<double>
+  contact_stiffness<2>(const IncrementalProblem<2> &, std::vector<double>);
+  template std::vector<double>
+  contact_stiffness<3>(const IncrementalProblem<3> &, std::vector<double>);
 } // namespace FrictionalContact

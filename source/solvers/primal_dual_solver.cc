@@ -149,7 +149,7 @@ namespace FrictionalContact
     if (!paper_scaling)
       {
         alpha *= mean_over_candidates(contact,
-                                      contact.normal_stiffness(problem.stiffness),
+                                      contact_stiffness(problem, contact.normal_stiffness(problem.stiffness)),
                                       du.get_mpi_communicator());
         step_goal *= problem.length_scale;
       }

@@ -119,17 +119,21 @@ namespace FrictionalContact
     const unsigned int setups   = linear_solver.n_amg_setups;
     linear_solver.prepare_stiffness_preconditioner();
 
-    // The scale c_j of the complementarity functions: K's normal diagonal,
-    // or for a nearly incompressible body that of the split's reduced
-    // stiffness. K's carries the bulk modulus, thousands of times the
-    // shear modulus at nu = 0.4999, and c_j that large let the gaps of
-    // inexact Newton steps decide the normal sets, which then cycle.
+    // The scale c_j of the complementarity functions: the contact's
+    // normal stiffness from K's diagonal, or for a nearly incompressible
+    // body from that of the split's reduced stiffness. K's carries the
+    // bulk modulus, thousands of times the shear modulus at nu = 0.4999,
+    // and c_j that large let the gaps of inexact Newton steps decide the
+    // normal sets, which then cycle.
+    // The preconditioner's springs take the node's own (they stand for
+    // its conditions in the matrix of its own body).
     const VolumetricSplit *volumetric = linear_solver.volumetric_split();
-    const std::vector<double> c = contact.normal_stiffness(
+    const std::vector<double> own_stiffness = contact.normal_stiffness(
       volumetric != nullptr ?
         static_cast<const StiffnessOperator &>(
           AssembledStiffness(*volumetric->reduced_stiffness)) :
         problem.stiffness);
+    const std::vector<double> c = contact_stiffness(problem, own_stiffness);
 
     std::vector<double> initial_c_t(n);
     for (unsigned int j = 0; j < n; ++j)
@@ -149,6 +153,17 @@ namespace FrictionalContact
     // positive scale serves the merit's force balance.
     const double mean_c =
       contact.n_candidates() > 0 ? mean_over_candidates(contact, c, comm) : 1.;
+    // The merit's weights of the force balance: 1 / K_ii, of the matrix
+    // the c_j come from.
+    TrilinosWrappers::MPI::Vector balance_weight(du);
+    for (const types::global_dof_index i : balance_weight.locally_owned_elements())
+      {
+        const double K_ii = volumetric != nullptr ?
+                              volumetric->reduced_stiffness->diag_element(i) :
+                              problem.stiffness.diag_element(i);
+        balance_weight[i] = K_ii > 0 ? 1. / K_ii : 1. / mean_c;
+      }
+    balance_weight.compress(VectorOperation::insert);
     // From a warm start (du != 0), a nonlinear law's tangent is taken there:
     // now, or once the first Newton step's preconditioner is made
     // (NonlinearStiffness::preconditioner_from_start()).
@@ -175,6 +190,8 @@ namespace FrictionalContact
                                                 problem.contact_held.stabilization,
                                                 comm);
     MeritWatch                progress;
+    // The line search's merit at the current iterate.
+    double                    merit         = 0;
     unsigned int              steps_blocked = 0;
     // The force balance of the iterate before the current one, and whether
     // the current one still lacks a nonlinear law's tangent
@@ -238,7 +255,7 @@ namespace FrictionalContact
           }
 
         // The preconditioner for the new conditions, if they changed.
-        if (preconditioner.update(sets, c, friction, comm))
+        if (preconditioner.update(sets, own_stiffness, friction, comm))
           ++result.amg_updates;
         if (tangent_after_preconditioner)
           {
@@ -259,6 +276,10 @@ namespace FrictionalContact
             linear_iterations =
               solve_linearized(problem, sets, P, preconditioner, linear_solver, friction,
                                r, forcing_term,
+                               // The nonlinear residual at the iterate, as a
+                               // force: the merit's energy times a stiffness.
+                               k > 0 ? std::sqrt(mean_c * merit) :
+                                       std::numeric_limits<double>::infinity(),
                                // The stopping rule's force: p, or K du where an
                                // obstacle drives the body without a load.
                                0.1 * tolerance *
@@ -279,7 +300,8 @@ namespace FrictionalContact
 
         work.inverted_cell.clear();
         const LineSearchStep step = search_along_step(
-          problem, conditions, c, sets.c_t, friction, mean_c, du, r, work, !last_likely);
+          problem, conditions, c, sets.c_t, friction, mean_c, balance_weight, du, r, work,
+          !last_likely);
         // A shortened step took the tangent where it stopped.
         tangent_due = last_likely && step.t == 1;
         // A NaN merit would accept every step (its comparisons are false).
@@ -289,6 +311,7 @@ namespace FrictionalContact
                              std::to_string(k + 1);
             break;
           }
+        merit = step.merit_after;
         forcing.record(std::sqrt(step.merit_before),
                        std::sqrt(step.merit_after),
                        step.t == 1);

@@ -102,6 +102,19 @@ namespace FrictionalContact
     void
     displacement_to_w(const Vector &u, Vector &w) const;
 
+    /**
+     * The normal stiffness of the master body seen at each candidate of
+     * @p contact that is a pair's slave node (infinity at the others, and
+     * where Q = I): m_j = sum_l M_jl K_ll / A_l, the master's normal
+     * stiffness per area at its nodes l (K_ll, its diagonal, or that of
+     * the split's reduced stiffness; A_l = sum_j M_jl, the master's
+     * lumped area on the interface) integrated against node j's mortar
+     * weights (M = D P, D_jj the slave's lumped area). For matching meshes
+     * of one material it is the slave's own stiffness. Collective.
+     */
+    std::vector<double>
+    master_stiffness(const ElasticBody<dim> &body, const ContactOperator<dim> &contact) const;
+
     /// The rigid-body modes (locally owned vectors) in w, for the AMG.
     std::vector<std::vector<double>>
     modes_to_w(const std::vector<std::vector<double>> &modes) const;

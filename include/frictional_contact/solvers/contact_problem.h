@@ -104,6 +104,11 @@ namespace FrictionalContact
     /// frame: the row's slide along the master (empty elsewhere; see
     /// gap_at()).
     std::vector<Tensor<1, dim>> gap_slopes;
+    /// Where a candidate touches a deformable body (a pair's slave node),
+    /// the normal stiffness of that body seen at the node
+    /// (MortarBasis::master_stiffness()); empty where every candidate
+    /// touches something rigid (an obstacle, a tool).
+    std::vector<double> master_stiffness;
     /// The bodies only contact holds (none for most scenes).
     ContactHeldBodies contact_held;
     /// The internal force of nonlinear laws (nullptr: K du).
@@ -196,6 +201,21 @@ namespace FrictionalContact
    * The residuals at (du, r), given K du and T r (which the solvers have at
    * hand). @p scratch is a work vector of the size of du.
    */
+  /**
+   * The scale c_j of the complementarity functions at each candidate: the
+   * normal stiffness of node j against what it touches. That is its own,
+   * @p own (ContactMap::normal_stiffness() of K), where it touches
+   * something rigid, and where it touches another body the two in series,
+   * c_j = k_j m_j / (k_j + m_j) with m_j the problem's master_stiffness:
+   * the slave's alone was the stiffer side's where the slave is much
+   * stiffer than its master, and c_j that large let the tiny slips of
+   * inexact Newton steps decide the stick and slip sets (doc/algorithm.md,
+   * "Bodies of very different stiffness").
+   */
+  template <int dim>
+  std::vector<double>
+  contact_stiffness(const IncrementalProblem<dim> &problem, std::vector<double> own);
+
   template <int dim>
   Residuals
   compute_residuals(const IncrementalProblem<dim>     &problem,

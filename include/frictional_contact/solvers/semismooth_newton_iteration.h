@@ -219,9 +219,20 @@ namespace FrictionalContact
      * One linear problem of the method: moves du onto the node conditions
      * (du = du_D + w) and solves for w in the subspace where they are
      * homogeneous, until the residual is @p reduction times the initial one
-     * (not below @p floor); then du += w. Returns the linear iterations;
-     * throws SolverControl::NoConvergence where the solve stopped short
-     * above inexact_step_reduction of the right-hand side.
+     * or times @p residual_scale, the size of the nonlinear residual at the
+     * iterate, if that is smaller (not below @p floor); then du += w.
+     * Returns the linear iterations; throws SolverControl::NoConvergence
+     * where the solve stopped short above inexact_step_reduction of the
+     * right-hand side.
+     *
+     * Inexact Newton asks |F + J s| <= eta |F| of the linearised residual,
+     * relative to the residual F at the iterate; the right-hand side here
+     * is the residual after the node conditions moved du, which is far
+     * larger where moving the contact nodes loads a stiff body (a slave
+     * side much stiffer than its master): solved to eta times it, the step
+     * left force errors above the contact forces themselves, and the line
+     * search cut every step to its shortest (doc/algorithm.md, "Bodies of
+     * very different stiffness").
      */
     template <int dim>
     unsigned int
@@ -233,6 +244,7 @@ namespace FrictionalContact
                      const bool                          friction,
                      const std::vector<Tensor<1, dim>>  &r,
                      const double                        reduction,
+                     const double                        residual_scale,
                      const double                        floor,
                      TrilinosWrappers::MPI::Vector      &du,
                      TrilinosWrappers::MPI::Vector      &K_du,
@@ -294,7 +306,9 @@ namespace FrictionalContact
             any_slip || !K.is_symmetric() || !problem.gap_slopes.empty(),
             K.is_assembled() ? 30 : 12,
             linear_solver.maximum_iterations(),
-            std::max(reduction * rhs.l2_norm(), floor), rhs, w);
+            std::max(reduction * std::min(rhs.l2_norm(), residual_scale), floor),
+            rhs,
+            w);
         }
       catch (const SolverControl::NoConvergence &e)
         {
@@ -452,6 +466,7 @@ namespace FrictionalContact
                       const std::vector<double>        &c_t,
                       const bool                        friction,
                       const double                      mean_c,
+                      const TrilinosWrappers::MPI::Vector &balance_weight,
                       TrilinosWrappers::MPI::Vector    &du,
                       std::vector<Tensor<1, dim>>      &r,
                       NewtonWorkspace<dim>             &work,
@@ -501,7 +516,7 @@ namespace FrictionalContact
           work.rhs.add(-(1 - t), work.previous_T_r, -t, work.T_r);
           return &work.rhs;
         };
-      const MeritAlongStep<dim> merit(problem, conditions, c, c_t, friction, mean_c,
+      const MeritAlongStep<dim> merit(problem, conditions, c, c_t, friction, mean_c, balance_weight,
                                       work.previous_du, du, work.previous_r, r,
                                       work.previous_residual, work.residual,
                                       work.scratch, nonlinear_residual);

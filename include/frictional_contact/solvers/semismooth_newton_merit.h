@@ -14,8 +14,14 @@ namespace FrictionalContact
     /**
      * The merit of the line search at the point t of the segment from the
      * previous iterate (du_0, r_0) to the new one (du_1, r_1): the squared
-     * complementarity functions of all nodes, scaled by c_j, plus the
-     * squared force balance residual, scaled by the mean c. For a linear
+     * complementarity functions of all nodes, each over its c_j, plus the
+     * squared force balance residual, each dof's over K's diagonal there
+     * (@p balance_weight, 1 / K_ii): both energies, which weigh a stiff
+     * body's force residuals as they weigh a soft one's (with one scale
+     * for all, the mean c, a slave a million times stiffer than its master
+     * had its residuals, large forces of tiny displacement errors, decide
+     * every line search; doc/algorithm.md, "Bodies of very different
+     * stiffness"). For a linear
      * law the residual and the reactions are linear along the segment. For
      * a nonlinear one, @p nonlinear_residual gives the residual at t,
      * N(du) - p - T ((1 - t) r_0 + t r_1) (nullptr where a cell inverts),
@@ -45,6 +51,7 @@ namespace FrictionalContact
                      const std::vector<double>         &c_t,
                      const bool                         friction,
                      const double                       mean_c,
+                     const Vector                      &balance_weight,
                      const Vector                      &du_0,
                      const Vector                      &du_1,
                      const std::vector<Tensor<1, dim>> &r_0,
@@ -59,6 +66,8 @@ namespace FrictionalContact
         , c_t(c_t)
         , friction(friction)
         , mean_c(mean_c)
+        , balance_weight(balance_weight)
+        , weighted(balance_weight)
         , du_0(du_0)
         , du_1(du_1)
         , r_0(r_0)
@@ -91,11 +100,11 @@ namespace FrictionalContact
             else
               problem.contact.normal_turns(scratch, step_turns);
           }
-        balance_a = balance_0.norm_sqr();
-        balance_b = balance_0 * balance_1 - balance_a;
+        balance_a = weighted_product(balance_0, balance_0);
+        balance_b = weighted_product(balance_0, balance_1) - balance_a;
         scratch   = balance_1;
         scratch -= balance_0;
-        balance_c = scratch.norm_sqr();
+        balance_c = weighted_product(scratch, scratch);
       }
 
       double
@@ -145,13 +154,21 @@ namespace FrictionalContact
         if (turns)
           problem.contact.add_force_beyond_frames(held_reactions, step_turns, t, scratch);
         const double balance =
-          inside || turns ? scratch.norm_sqr() :
+          inside || turns ? weighted_product(scratch, scratch) :
                             balance_a + 2 * t * balance_b + t * t * balance_c;
-        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) +
-               balance / mean_c;
+        return Utilities::MPI::sum(sum, du_0.get_mpi_communicator()) + balance;
       }
 
     private:
+      /// sum_i x_i y_i / K_ii (collective).
+      double
+      weighted_product(const Vector &x, const Vector &y) const
+      {
+        weighted = x;
+        weighted.scale(balance_weight);
+        return weighted * y;
+      }
+
       /// A node's reaction, augmented normal reaction r_n + c_j g, friction
       /// bound and augmented tangential reaction z at a point of the step.
       struct NodeAtStep
@@ -192,6 +209,8 @@ namespace FrictionalContact
       const std::vector<double>         &c_t;
       const bool                         friction;
       const double                       mean_c;
+      const Vector                      &balance_weight;
+      mutable Vector                     weighted;
       const Vector                      &du_0;
       const Vector                      &du_1;
       const std::vector<Tensor<1, dim>> &r_0;
