@@ -15,8 +15,8 @@ after, the two labels side by side in the table of doc/performance.md,
 "Bodies of very different stiffness").
 
 usage: bench/stiffness_contrast.py [--program build/contact] [--label after]
-         [--scenes block_on_block_2d,...] [--ratios 1e-6,1e-3,1,1e3,1e6]
-         [--friction 0,0.5] [--ranks 1]
+         [--commit REV] [--scenes block_on_block_2d,...]
+         [--ratios 1e-6,1e-3,1,1e3,1e6] [--friction 0,0.5] [--ranks 1]
 """
 import argparse
 import os
@@ -82,6 +82,8 @@ def main():
     parser.add_argument("--ratios", default="1e-6,1e-3,1,1e3,1e6")
     parser.add_argument("--friction", default="0,0.5")
     parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--commit", help="the commit --program was built from "
+                        "(default: this checkout's)")
     args = parser.parse_args()
     scenes = args.scenes.split(",")
     unknown = set(scenes) - set(SCENES)
@@ -96,7 +98,8 @@ def main():
             equal = None
             for ratio in ["1"] + [r for r in ratios if r != "1"]:
                 row = dict(label=args.label, scene=scene, ratio=ratio, friction=friction,
-                           ranks=args.ranks, commit=commit(), newton_vs_equal="",
+                           ranks=args.ranks, commit=args.commit or commit(),
+                           newton_vs_equal="",
                            krylov_per_step_vs_equal="")
                 row.update(measure(args.program, scene, ratio, friction, args.ranks))
                 if ratio == "1":

@@ -8,7 +8,8 @@ views side by side,
      tool.pvd) drawn at its position at that time;
   2. the contact face (the faces whose vertices are all contact candidates)
      coloured by the contact pressure, seen from the obstacle;
-  3. the same face coloured by the contact state (0 free, 1 stick, 2 slip).
+  3. the same face with each candidate drawn as a dot of its contact state
+     (free, stick, slip; "in contact" where the scene has no friction).
 
 Run it with ParaView's Python, without a screen on a virtual display:
 
@@ -151,6 +152,18 @@ def obstacle_source(simple, entries, dim, t, bounds):
     return None
 
 
+def frictionless(entries):
+    """Whether no contact of the scene has friction (Contact/Friction
+    coefficient 0 and no pair with its own)."""
+    if float(entries.get("Contact/Friction coefficient", "0") or 0) > 0:
+        return False
+    for pair in entries.get("Contact/Pairs", "").split(","):
+        parts = pair.split(":")
+        if len(parts) > 2 and float(parts[2]) > 0:
+            return False
+    return True
+
+
 def merged_by_body(simple, reader):
     """The reader's cells with coincident vertices merged within each body
     (the point field 'body'), not across bodies: each body is moved by
@@ -269,21 +282,35 @@ def main():
     pressure.SetScalarBarVisibility(views[1], True)
     simple.GetScalarBar(simple.GetColorTransferFunction("contact_pressure"),
                         views[1]).Title = "contact pressure"
+    # The contact state as categories: a dot per vertex of the face in the
+    # colour of its state, over the face in grey (coloured as a field the
+    # states blended between vertices into colours of no state).
+    background = simple.Show(face, views[2])
+    background.DiffuseColor = background.AmbientColor = [0.85, 0.85, 0.85]
+    simple.ColorBy(background, None)
     state = simple.Show(face, views[2])
+    state.SetRepresentationType("Points")
+    state.PointSize = 14 if dim == 2 else 9
+    state.RenderPointsAsSpheres = 1
     simple.ColorBy(state, ("POINTS", "contact_state"))
     state_lut = simple.GetColorTransferFunction("contact_state")
     state_lut.InterpretValuesAsCategories = 1
     # -1: a vertex of the face that is not a candidate (a hanging vertex,
-    # one on a fixed boundary): drawn pale, and named in the legend.
-    state_lut.Annotations = ["-1", "not a candidate", "0", "free", "1", "stick",
-                             "2", "slip"]
-    state_lut.IndexedColors = [0.92, 0.92, 0.85, 0.7, 0.7, 0.7, 0.1, 0.4, 0.9,
-                               0.9, 0.3, 0.1]
+    # one on a fixed boundary). Without friction every node in contact
+    # slips: "in contact".
+    if frictionless(entries):
+        state_lut.Annotations = ["-1", "not a candidate", "0", "free", "2", "in contact"]
+        state_lut.IndexedColors = [0.92, 0.92, 0.85, 0.6, 0.6, 0.6, 0.9, 0.3, 0.1]
+    else:
+        state_lut.Annotations = ["-1", "not a candidate", "0", "free", "1", "stick",
+                                 "2", "slip"]
+        state_lut.IndexedColors = [0.92, 0.92, 0.85, 0.6, 0.6, 0.6, 0.1, 0.4, 0.9,
+                                   0.9, 0.3, 0.1]
     state.SetScalarBarVisibility(views[2], True)
     simple.GetScalarBar(state_lut, views[2]).Title = "contact state"
     if dim == 2:
         # The contact boundary of a 2D body is a line: draw it thick.
-        for display in (pressure, state):
+        for display in (pressure, background):
             display.LineWidth = 12
             display.RenderLinesAsTubes = 1
     # Legends below the pictures, not over them.
@@ -294,6 +321,13 @@ def main():
         bar.Orientation = "Horizontal"
         bar.WindowLocation = "Lower Center"
         bar.ScalarBarLength = 0.6
+        # The ends of the range alone, in one format: ticks beside range
+        # labels of another format collided ("0.3 3.9e-01").
+        if function is not state_lut:
+            bar.DrawTickLabels = 0
+            bar.DrawTickMarks = 0
+            bar.AddRangeLabels = 1
+            bar.RangeLabelFormat = "%-#.2g"
 
     obstacle_display, obstacle = None, None
     # A rigid tool from a surface mesh: its surface where it stands at each
@@ -316,6 +350,12 @@ def main():
             simple.Delete(obstacle)
         obstacle = obstacle_source(simple, entries, dim, t, bounds) \
             if entries.get("Contact/Contact boundaries", "").strip() else None
+        if obstacle is not None and cut is not None:
+            # Cut as the body is: a whole obstacle in front of the cut
+            # hid what happens under it (step-42's plastic zone).
+            obstacle = simple.Clip(Input=obstacle, ClipType="Plane", Crinkleclip=0,
+                                   Invert=0)
+            obstacle.ClipType.Normal = [0, 1, 0]
         if obstacle is not None:
             obstacle_display = simple.Show(obstacle, views[0])
             obstacle_display.DiffuseColor = [0.45, 0.45, 0.45]
@@ -334,6 +374,8 @@ def main():
             middle = touching.GetDataInformation().GetBounds() \
                 if touching.GetDataInformation().GetNumberOfCells() > 0 else bounds
             cut.ClipType.Origin = [0, 0.5 * (middle[2] + middle[3]), 0]
+            if obstacle is not None:
+                obstacle.ClipType.Origin = list(cut.ClipType.Origin)
         if touching.GetDataInformation().GetNumberOfCells() > 0:
             inner = touching.GetDataInformation().GetBounds()
             zone = [f(z, i + s * 0.5 * (inner[2 * k + 1] - inner[2 * k]))
@@ -371,12 +413,16 @@ def main():
                                        centre[2] + 1.5 * extent]
                 view.CameraViewUp = [0, 0, 1]
             else:
-                # The contact zone seen along its thinnest axis (its normal),
-                # from below (the obstacle's side for scenes that press down).
+                # The contact zone seen along its thinnest axis (its
+                # normal), from the side on which the other two axes run
+                # right and up as in a drawing of the body (x right: from
+                # +z with y up, from -y with z up; y right: from +x with z
+                # up): not mirrored against view 1.
                 normal_axis = min(range(3), key=lambda k: box[2 * k + 1] - box[2 * k])
                 up_axis = 1 if normal_axis == 2 else 2
+                side = -1 if normal_axis == 1 else 1
                 position = list(centre)
-                position[normal_axis] = box[2 * normal_axis] - 10 * extent
+                position[normal_axis] = centre[normal_axis] + side * 10 * extent
                 view.CameraPosition = position
                 view.CameraViewUp = [1 if k == up_axis else 0 for k in range(3)]
             if i == 0 and dim == 3 and whole is not bounds:

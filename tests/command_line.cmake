@@ -55,5 +55,25 @@ add_test(NAME docs/tables_from_csv
 add_test(NAME docs/stale_numbers
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_numbers.py
           ${PROJECT_SOURCE_DIR} $<TARGET_FILE:contact>)
+# Facts the pages state that drift with the code (check_doc_facts.py): the
+# README's two commands, quoted defaults, the values every Selection's
+# description names, the scenes the quoted plotting commands run on, the
+# fuzz test's numbers, build times typed by hand; and against the scene
+# runs of a linear, a J2 and a finite-strain scene with a tool, every VTU
+# field and output file and the user guide's tables of them.
+add_test(NAME docs/facts
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_facts.py
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:contact>)
+add_test(NAME docs/facts_self_test
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_facts.py --self-test)
+set(_scene_runs ${CMAKE_CURRENT_BINARY_DIR}/scenes)
+add_test(NAME docs/output_files_and_fields
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_facts.py
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:contact> --runs
+          ${_scene_runs}/example1/1/output-example1
+          ${_scene_runs}/step42_indentation/1/output-step42-indentation
+          ${_scene_runs}/ironing_2d/1/output-ironing-2d)
+set_tests_properties(docs/output_files_and_fields PROPERTIES
+  FIXTURES_REQUIRED "scene_example1;scene_step42_indentation;scene_ironing_2d")
 add_test(NAME docs/stale_numbers_self_test
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_doc_numbers.py --self-test)

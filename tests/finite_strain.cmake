@@ -136,7 +136,7 @@ add_test(NAME ironing_2d.krylov_per_increment
     ${CMAKE_CURRENT_BINARY_DIR}/scenes/ironing_2d/2/output-ironing-2d/statistics
     --rows 1-40 --at-most "Krylov iterations" 800)
 set_tests_properties(ironing_2d.krylov_per_increment PROPERTIES
-  FIXTURES_REQUIRED ironing_2d_scene)
+  FIXTURES_REQUIRED scene_ironing_2d_2)
 
 # The geometry as a fixed point over solves (measured 0.0033 and 0.021, and
 # 0.0014 and 0.0043 on cells of half the size).

@@ -49,25 +49,27 @@ foreach(_scene ${_scenes})
         COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/run_scene.py
                 $<TARGET_FILE:contact> ${_run} ${_variant}
         WORKING_DIRECTORY ${_directory})
-      set_tests_properties(${_test} PROPERTIES
+      # Each run is the fixture scene_<name>[_<ranks>] of the checks that
+      # read its files (the serial one: scene_<name>).
+      set(_fixture scene_${_name}_${_variant})
+      if(_variant EQUAL 1)
+        set(_fixture scene_${_name})
+      endif()
+      set_tests_properties(${_test} PROPERTIES FIXTURES_SETUP ${_fixture}
         ENVIRONMENT "${_environment}" PROCESSORS ${_variant} TIMEOUT 600)
       if(_name STREQUAL "step42_indentation")
         # Its solve on the last mesh starts from the solve on the mesh
         # before it (doc/algorithm.md, "Nonlinear laws"): at most 10 Newton
         # steps there on 1, 2 and 3 ranks (7 measured; from the increment's
         # start 24, 24 and 11).
-        set_tests_properties(${_test} PROPERTIES FIXTURES_SETUP step42_scene_${_variant})
         add_test(NAME ${_test}.newton_steps
           COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_statistics.py
                   ${_directory}/output-step42-indentation/statistics
                   --rows 1-1 --at-most "Contact solver iterations" 10)
         set_tests_properties(${_test}.newton_steps PROPERTIES
-          FIXTURES_REQUIRED step42_scene_${_variant})
+          FIXTURES_REQUIRED ${_fixture})
       endif()
     endif()
   endforeach()
 endforeach()
 
-# The 2D ironing scene's statistics on 2 ranks are what
-# ironing_2d.krylov_per_increment reads (finite_strain.cmake).
-set_tests_properties(scenes/ironing_2d.mpirun=2 PROPERTIES FIXTURES_SETUP ironing_2d_scene)

@@ -16,8 +16,9 @@ namespace FrictionalContact
                       Patterns::Selection("abort|cut increment"),
                       "What a failed increment does (no convergence, "
                       "divergence, stagnation): abort the run, with the "
-                      "residuals, keeping the finished increments; or retry "
-                      "it as two halves, up to Maximum cuts times in a row.");
+                      "residuals, keeping the finished increments; or cut "
+                      "increment: retry it as two halves, up to Maximum "
+                      "cuts times in a row.");
     prm.declare_entry("Maximum cuts",
                       "5",
                       Patterns::Integer(0, 30),

@@ -24,7 +24,8 @@ namespace FrictionalContact
       "largest Kelly estimate of the displacement (jumps of the stress "
       "across faces) and coarsen those with the smallest. contact state: "
       "refine the cells whose contact face has candidates in different "
-      "states (the edge of the contact zone, the stick/slip boundary). Each "
+      "states (the edge of the contact zone, the stick/slip boundary). kelly "
+      "and contact state: both (the union of the cells each marks). Each "
       "refinement is followed by a new solve of the same increment from the "
       "state before it, carried over to the new mesh.");
     prm.declare_entry("Refine fraction",

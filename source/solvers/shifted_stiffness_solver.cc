@@ -162,7 +162,9 @@ namespace FrictionalContact
     prm.declare_entry("AMG smoother type",
                       "Chebyshev",
                       Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
-                      "The smoother on each level of the AMG.");
+                      "The smoother on each level of the AMG: Chebyshev, or "
+                      "symmetric Gauss-Seidel (with which the Newton method "
+                      "takes the AMG of K without its node conditions).");
     prm.declare_entry("AMG coarse solver",
                       "auto",
                       Patterns::Selection("auto|MUMPS|KLU"),
