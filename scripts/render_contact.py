@@ -284,11 +284,12 @@ def main():
                         views[1]).Title = "contact pressure"
     # The contact state as categories: a dot per vertex of the face in the
     # colour of its state, over the face in grey (coloured as a field the
-    # states blended between vertices into colours of no state).
+    # states blended between vertices into colours of no state). A view
+    # shows a source once: the dots are of an identity transform of it.
     background = simple.Show(face, views[2])
+    background.ColorArrayName = ["POINTS", ""]
     background.DiffuseColor = background.AmbientColor = [0.85, 0.85, 0.85]
-    simple.ColorBy(background, None)
-    state = simple.Show(face, views[2])
+    state = simple.Show(simple.Transform(Input=face), views[2])
     state.SetRepresentationType("Points")
     state.PointSize = 14 if dim == 2 else 9
     state.RenderPointsAsSpheres = 1

@@ -186,7 +186,8 @@ namespace
   {
     return "include " SOURCE_DIR "/../parameters/" + file +
            "\nsubsection Postprocess\n subsection Visualization\n  set Write "
-           "vtu = false\n end\nend\nsubsection Output\n set Write "
+           "vtu = false\n  set Write csv tables = false\n end\nend\n"
+           "subsection Output\n set Write "
            "statistics = false\nend\n" +
            extra;
   }
