@@ -447,6 +447,39 @@ def suite_time(root):
                     body)
 
 
+def stiffness_contrast(root):
+    """Bodies of very different stiffness (bench/stiffness_contrast.py): per
+    scene, friction and ratio of the slave's modulus to the master's, the
+    Newton steps and Krylov iterations per Newton step against the same
+    scene at equal moduli, before and after the change the labels name."""
+    table = rows(root, "stiffness-contrast.csv")
+    labels = [label for label in ("before", "after")
+              if any(r["label"] == label for r in table)]
+    runs = {(r["label"], r["scene"], r["friction"], float(r["ratio"])): r for r in table}
+
+    def cells(r):
+        if r is None:
+            return ["", ""]
+        if r["converged"] != "1":
+            return ["failed", ""]
+        per_step = int(r["krylov_iterations"]) / max(1, int(r["newton_iterations"]))
+        if not r["newton_vs_equal"]:
+            return [r["newton_iterations"], f"{per_step:.0f}"]
+        return [f"{r['newton_iterations']} (x {float(r['newton_vs_equal']):.2f})",
+                f"{per_step:.0f} (x {float(r['krylov_per_step_vs_equal']):.2f})"]
+    keys = sorted({(r["scene"], r["friction"], float(r["ratio"])) for r in table})
+    body = []
+    for scene, friction, ratio in keys:
+        row = [scene, friction, f"{ratio:g}"]
+        for label in labels:
+            row += cells(runs.get((label, scene, friction, ratio)))
+        body.append(row)
+    header = ["scene", "friction", "E slave / E master"]
+    for label in labels:
+        header += [f"{label}: Newton steps (x equal)", f"{label}: Krylov per step (x equal)"]
+    return markdown(header, body)
+
+
 TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
@@ -467,4 +500,5 @@ TABLES = {
     "nearly-incompressible-lame": lame_elastic,
     "nearly-incompressible-example2": example2_newton,
     "suite-time": suite_time,
+    "stiffness-contrast": stiffness_contrast,
 }

@@ -8,11 +8,15 @@ usage: check_statistics.py statistics --rows FIRST-LAST
        check_statistics.py statistics --rows FIRST-LAST --at-most "column" VALUE
        check_statistics.py statistics --rows 1-1 --same-columns OTHER_STATISTICS
        check_statistics.py statistics --rows FIRST-LAST --between "column" LOW HIGH
+       check_statistics.py statistics --rows FIRST-LAST
+           --total-at-most-times OTHER_STATISTICS "column" FACTOR
 Passes if numerator / denominator = VALUE within the relative tolerance on
 every row of the range (rows counted from 1, as the increments); or if the
 column equals that of the other file within the relative tolerance; or if
 the column is at most VALUE on every row of the range; or if both files
-have the same columns in the same order (a 2D and a 3D run, say).
+have the same columns in the same order (a 2D and a 3D run, say); or if
+the column's sum over the rows is at most FACTOR times the other file's
+(the Newton steps of a run against those of a reference run).
 """
 import argparse
 import re
@@ -43,6 +47,8 @@ def main():
     parser.add_argument("--at-most", nargs=2, metavar=("COLUMN", "VALUE"))
     parser.add_argument("--same-columns")
     parser.add_argument("--between", nargs=3, metavar=("COLUMN", "LOW", "HIGH"))
+    parser.add_argument("--total-at-most-times", nargs=3,
+                        metavar=("OTHER_STATISTICS", "COLUMN", "FACTOR"))
     parser.add_argument("--tolerance", type=float, default=1e-6)
     args = parser.parse_args()
 
@@ -60,6 +66,18 @@ def main():
             print(f"increment {row[0]}: {column} {a:g} against {b:g} "
                   f"(relative difference {error:.1e}, {'ok' if passed else 'ABOVE'} "
                   f"{args.tolerance:g})")
+        print("PASSED" if ok else "FAILED")
+        return 0 if ok else 1
+    if args.total_at_most_times:
+        other_path, column, factor = args.total_at_most_times
+        other_columns, other_rows = read_statistics(other_path)
+        ok = len(rows) >= last and len(other_rows) >= last
+        total = sum(float(row[columns[column]]) for row in rows[first - 1:last])
+        reference = sum(float(row[other_columns[column]]) for row in other_rows[first - 1:last])
+        ok = ok and total <= float(factor) * reference
+        print(f"{column}, increments {first} to {last}: {total:g} against {reference:g} "
+              f"of {other_path} ({total / max(reference, 1e-300):.2f} times; "
+              f"{'at most' if ok else 'ABOVE'} {float(factor):g})")
         print("PASSED" if ok else "FAILED")
         return 0 if ok else 1
     if args.same_columns:

@@ -39,7 +39,7 @@ namespace
     " set Cycles = 0\nend\n"
     "subsection Linear solver\n set Preconditioner = geometric multigrid\nend\n"
     "subsection Postprocess\n subsection Visualization\n"
-    "  set Write vtu = false\n end\nend\n"
+    "  set Write vtu = false\n  set Write csv tables = false\n end\nend\n"
     "subsection Output\n set Write statistics = false\nend\n";
 } // namespace
 

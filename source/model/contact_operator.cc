@@ -32,7 +32,9 @@ namespace FrictionalContact
       "items separated by ';', e.g. 'block bottom : base top'; the master "
       "may also be the rigid tool, by its <Rigid tool/Name>. The slave "
       "side carries the contact forces (dual mortar: one friction cone per "
-      "slave node); make it the finer side. A third field is the pair's "
+      "slave node); make it the finer side, and where the bodies differ "
+      "much in stiffness and friction acts, the softer one if it is also "
+      "the finer (doc/user-guide.md). A third field is the pair's "
       "friction coefficient ('block bottom : base top : 0.3'); without it "
       "the pair has <Friction coefficient>.");
     prm.declare_entry("Friction coefficient",
