@@ -460,6 +460,8 @@ def stiffness_contrast(root):
     def cells(r):
         if r is None:
             return ["", ""]
+        if r.get("stopped") == "1":
+            return ["stopped by the time limit", ""]
         if r["converged"] != "1":
             return ["failed", ""]
         per_step = int(r["krylov_iterations"]) / max(1, int(r["newton_iterations"]))

@@ -53,8 +53,13 @@ def scenes(root):
         picture = os.path.join("doc", "figures", scene + ".png")
         if not os.path.isfile(os.path.join(root, picture)):
             raise OSError(f"no picture {picture} (scripts/make_gallery.sh)")
-        body.append([f'<img src="{picture}" width="240">',
-                     f"`parameters/{scene}.prm`", SCENE_POINTS[scene],
+        # A 2D scene's contact is a thin line in the picture: its profile
+        # plot (pressure and traction along the contact boundary) beside it.
+        profile = os.path.join("doc", "figures", scene + "-profile.png")
+        shown = f'<img src="{picture}" width="240">'
+        if os.path.isfile(os.path.join(root, profile)):
+            shown += f' <img src="{profile}" width="160">'
+        body.append([shown, f"`parameters/{scene}.prm`", SCENE_POINTS[scene],
                      seconds(times[scene]["wall_s"])])
     return markdown(["", "scene", "what it shows", "time"], body)
 
@@ -70,4 +75,5 @@ def first_hour_command(index, after):
 
 TABLES = {"scenes": scenes}
 QUOTES = {"first-hour-command-1": first_hour_command(1, ""),
-          "first-hour-command-2": first_hour_command(2, "1")}
+          "first-hour-command-2": first_hour_command(2, "1"),
+          "first-hour-command-2-alone": first_hour_command(2, "")}

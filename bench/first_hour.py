@@ -5,7 +5,10 @@ two commands of README.md's "Quick start", one after the other, as a new
 user copies them (the packages are taken as installed: apt-get's part is
 not timed). Prints each command's wall time against its goal (150 s for
 the first, 600 s for the second, on 2 cores) and writes
-doc/benchmarks/first-hour.csv, whose numbers README.md quotes.
+doc/benchmarks/first-hour.csv, whose numbers README.md quotes. A suite
+that ran to its end with failed tests is timed too; its row says how many
+failed (in a clone, the tests of README's quotes fail until this CSV is
+committed).
 
 --alone also times the second command in a clone of its own (it builds
 the program too, as it does when a user runs it first).
@@ -32,7 +35,7 @@ from runs import print_row  # noqa: E402
 COMMANDS = ["scripts/setup.sh && build/contact parameters/example1.prm",
             "scripts/setup.sh --tests && ctest --test-dir build --output-on-failure -j 2"]
 GOALS_S = [150, 600]
-COLUMNS = ["command", "after", "seconds", "goal_s", "tests", "commit"]
+COLUMNS = ["command", "after", "seconds", "goal_s", "tests", "failed", "commit"]
 CSV = os.path.join(ROOT, "doc", "benchmarks", "first-hour.csv")
 
 
@@ -52,7 +55,7 @@ def timed(command, folder):
                           text=True)
     seconds = time.monotonic() - start
     output = done.stdout + done.stderr
-    if done.returncode != 0:
+    if done.returncode != 0 and not failed_tests(output):
         sys.exit(f"'{command}' failed in {folder}:\n{output[-3000:]}")
     return seconds, output
 
@@ -60,6 +63,13 @@ def timed(command, folder):
 def tests_run(output):
     found = re.findall(r"tests passed, \d+ tests failed out of (\d+)", output)
     return found[-1] if found else ""
+
+
+def failed_tests(output):
+    """The tests that failed (a command that ran the suite to its end is
+    timed, and its row says how many failed)."""
+    found = re.findall(r"tests passed, (\d+) tests failed out of", output)
+    return int(found[-1]) if found else 0
 
 
 def main():
@@ -77,7 +87,8 @@ def main():
             seconds, output = timed(command, folder)
             rows.append(dict(command=index + 1, after="" if index == 0 else "1",
                              seconds=round(seconds), goal_s=GOALS_S[index],
-                             tests=tests_run(output), commit=commit()))
+                             tests=tests_run(output), failed=failed_tests(output),
+                             commit=commit()))
             print_row(rows[-1], COLUMNS)
         if args.alone:
             alone = tempfile.mkdtemp(prefix="first-hour-alone-")

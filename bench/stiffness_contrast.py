@@ -6,7 +6,8 @@ rubber one), without and with friction. Prints and writes, for each run,
 the Newton steps and Krylov iterations summed over its increments and its
 solve time, and against the same scene at equal moduli (ratio 1) the
 ratio of Newton steps and of Krylov iterations per Newton step: the goals
-are at most 1.5 and 2. A run that fails is a row with converged = 0.
+are at most 1.5 and 2. A run that fails is a row with converged = 0; one
+that --time-limit stopped also has stopped = 1.
 
 Rows go to doc/benchmarks/stiffness-contrast.csv in place of those of
 the same label, scene, ratio, friction and ranks (--label names the
@@ -17,6 +18,7 @@ after, the two labels side by side in the table of doc/performance.md,
 usage: bench/stiffness_contrast.py [--program build/contact] [--label after]
          [--commit REV] [--scenes block_on_block_2d,...]
          [--ratios 1e-6,1e-3,1,1e3,1e6] [--friction 0,0.5] [--ranks 1]
+         [--time-limit 300]
 """
 import argparse
 import os
@@ -35,7 +37,7 @@ SCENES = {"block_on_block_2d": ("base", "block"),
           "block_on_block_3d": ("base", "block"),
           "bracket_2d": ("base", "bracket"),
           "ball_on_plate": ("plate", "ball")}
-COLUMNS = ["label", "scene", "ratio", "friction", "ranks", "converged", "d",
+COLUMNS = ["label", "scene", "ratio", "friction", "ranks", "converged", "stopped", "d",
            "increments", "newton_iterations", "krylov_iterations", "solve_s",
            "newton_vs_equal", "krylov_per_step_vs_equal", "commit"]
 CSV = os.path.join(ROOT, "doc", "benchmarks", "stiffness-contrast.csv")
@@ -60,13 +62,16 @@ def scene_file(scene, ratio, friction, folder):
     return path
 
 
-def measure(program, scene, ratio, friction, ranks):
+def measure(program, scene, ratio, friction, ranks, time_limit):
     with tempfile.TemporaryDirectory() as folder:
         path = scene_file(scene, ratio, friction, folder)
-        output, _ = run([os.path.abspath(program), path], ranks, folder, may_fail=True)
-    converged = "the solve failed" not in output and "Error" not in output
-    row = dict(converged=int(converged), d="", increments="", newton_iterations="",
-               krylov_iterations="", solve_s="")
+        output, _ = run(["timeout", str(time_limit), os.path.abspath(program), path],
+                        ranks, folder, may_fail=True)
+    # A run that the time limit stopped printed no summary.
+    stopped = "-- summary:" not in output
+    converged = not stopped and "the solve failed" not in output and "Error" not in output
+    row = dict(converged=int(converged), stopped=int(stopped), d="", increments="",
+               newton_iterations="", krylov_iterations="", solve_s="")
     if converged:
         row.update(increment_statistics(output))
     return row
@@ -82,6 +87,8 @@ def main():
     parser.add_argument("--ratios", default="1e-6,1e-3,1,1e3,1e6")
     parser.add_argument("--friction", default="0,0.5")
     parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--time-limit", type=float, default=300,
+                        help="seconds after which a run is stopped (a row with stopped = 1)")
     parser.add_argument("--commit", help="the commit --program was built from "
                         "(default: this checkout's)")
     args = parser.parse_args()
@@ -101,7 +108,8 @@ def main():
                            ranks=args.ranks, commit=args.commit or commit(),
                            newton_vs_equal="",
                            krylov_per_step_vs_equal="")
-                row.update(measure(args.program, scene, ratio, friction, args.ranks))
+                row.update(measure(args.program, scene, ratio, friction, args.ranks,
+                                   args.time_limit))
                 if ratio == "1":
                     equal = row
                 elif row["converged"] and equal and equal["converged"]:
