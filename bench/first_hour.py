@@ -95,7 +95,8 @@ def main():
             clone(alone)
             seconds, output = timed(COMMANDS[1], alone)
             rows.append(dict(command=2, after="", seconds=round(seconds),
-                             goal_s=GOALS_S[1], tests=tests_run(output), commit=commit()))
+                             goal_s=GOALS_S[1], tests=tests_run(output),
+                             failed=failed_tests(output), commit=commit()))
             print_row(rows[-1], COLUMNS)
             if not args.keep:
                 shutil.rmtree(alone, ignore_errors=True)

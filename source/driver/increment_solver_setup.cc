@@ -49,6 +49,16 @@ namespace FrictionalContact
         "Model> = " + "J2 plasticity): set <Contact solver/Method> = "
         "semismooth Newton, which solves the internal force's Newton "
         "equations with the contact conditions");
+    const double contrast = body.get_materials().largest_modulus_ratio();
+    if (contact.has_pairs() && contrast > solver.method->largest_modulus_ratio())
+      throw InputError(
+        "<Contact solver/Method> = " + solver.method_name +
+        " does not reach its tolerance where the bodies' Young's moduli "
+        "differ by more than a factor of " +
+        Utilities::to_string(solver.method->largest_modulus_ratio()) +
+        " (here " + Utilities::to_string(contrast) +
+        "): set <Contact solver/Method> = semismooth Newton, which solves "
+        "such pairs");
     if (held.size() > ContactHeldBodies::max_bodies)
       throw InputError("only contact holds " + std::to_string(held.size()) +
                        " bodies; at most " +

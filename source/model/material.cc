@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace FrictionalContact
 {
@@ -421,6 +422,21 @@ namespace FrictionalContact
       if (material->elastic().finite_strain)
         return true;
     return false;
+  }
+
+
+
+  template <int dim>
+  double
+  Materials<dim>::largest_modulus_ratio() const
+  {
+    double smallest = std::numeric_limits<double>::max(), largest = 0;
+    for (const auto &[id, material] : materials)
+      {
+        smallest = std::min(smallest, material->elastic().youngs_modulus);
+        largest  = std::max(largest, material->elastic().youngs_modulus);
+      }
+    return materials.empty() ? 1. : largest / smallest;
   }
 
 

@@ -390,6 +390,10 @@ namespace FrictionalContact
     bool
     any_finite_strain() const;
 
+    /// The largest Young's modulus of the bodies over the smallest.
+    double
+    largest_modulus_ratio() const;
+
     /// The largest number of history values of any body's law.
     unsigned int
     max_history_values() const;

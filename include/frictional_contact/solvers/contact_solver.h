@@ -6,6 +6,7 @@
 #include <frictional_contact/solvers/contact_problem.h>
 #include <frictional_contact/solvers/shifted_stiffness_solver.h>
 
+#include <limits>
 #include <string>
 
 namespace FrictionalContact
@@ -84,6 +85,17 @@ namespace FrictionalContact
     handles_contact_held_bodies() const
     {
       return false;
+    }
+
+    /**
+     * The largest ratio of the bodies' Young's moduli in a scene with
+     * contact pairs for which the method reaches its tolerance (infinite:
+     * any).
+     */
+    virtual double
+    largest_modulus_ratio() const
+    {
+      return std::numeric_limits<double>::infinity();
     }
 
     /**
