@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Checks a run of a cube in uniaxial stress (tests/j2_uniaxial_*.prm: rollers
 on three faces, the top face moved along z) against the exact stress-strain
-curve of J2 plasticity with linear isotropic and kinematic hardening, which
-in uniaxial stress is the 1D law sigma = E (eps - eps_p), yield where
-|sigma - q| = sigma_y + H_iso alpha, q = H_kin eps_p (the Bauschinger
-effect), integrated increment by increment with the same radial return.
+curve of J2 plasticity with isotropic hardening (linear, Voce or a flow
+curve) and linear kinematic hardening, which in uniaxial stress is the 1D
+law sigma = E (eps - eps_p), yield where |sigma - q| = sigma_y(alpha),
+q = H_kin eps_p (the Bauschinger effect), integrated increment by
+increment with the 1D radial return (its step by bisection).
 
 usage: check_uniaxial.py OUTPUT_DIR --tolerance 1e-10
 
-Reads the run's parameters.prm (E, sigma_y, H_iso, H_kin), and for every
+Reads the run's parameters.prm (E, the hardening, H_kin), and for every
 increment displacement-NNNNN.csv (the strain eps = u_z / z of the top
 vertices, all equal) and stress-NNNNN.csv: in every cell s_zz must equal the
 exact sigma, the other stress components vanish, and the equivalent plastic
@@ -19,6 +20,7 @@ back in both directions, or the check proves little.
 import argparse
 import csv
 import glob
+import math
 import os
 import sys
 
@@ -26,17 +28,49 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_analytic import read_parameters  # noqa: E402
 
 
-def exact_path(strains, E, yield_stress, H_iso, H_kin):
-    """(sigma, alpha) after each strain of the path, by the 1D radial return."""
+def yield_curve(p):
+    """sigma_y(alpha) of the run's <Material/J2 plasticity/Hardening>: linear,
+    Voce or a flow curve (piecewise linear, constant past its last point)."""
+    entry = "Material/J2 plasticity/"
+    law = p.get(entry + "Hardening", "linear")
+    s0 = float(p[entry + "Yield stress"])
+    H = float(p[entry + "Isotropic hardening modulus"])
+    if law == "linear":
+        return lambda a: s0 + H * a
+    if law == "Voce":
+        s_inf = float(p[entry + "Saturation yield stress"])
+        delta = float(p[entry + "Saturation rate"])
+        return lambda a: s0 + (s_inf - s0) * (1 - math.exp(-delta * a)) + H * a
+    points = [tuple(float(x) for x in item.split()) for item in p[entry + "Flow curve"].split(",")]
+
+    def curve(a):
+        for (a0, s_0), (a1, s_1) in zip(points, points[1:]):
+            if a < a1:
+                return s_0 + (s_1 - s_0) * (a - a0) / (a1 - a0)
+        return points[-1][1]
+    return curve
+
+
+def exact_path(strains, E, sigma_y, H_kin):
+    """(sigma, alpha) after each strain of the path, by the 1D radial return:
+    the plastic step s solves |sigma_trial - q| - (E + H_kin) s =
+    sigma_y(alpha + s), by bisection (linear hardening: exactly)."""
     plastic, alpha, back = 0.0, 0.0, 0.0
     path = []
     for eps in strains:
         trial = E * (eps - plastic)
         relative = trial - back
-        excess = abs(relative) - (yield_stress + H_iso * alpha)
+        excess = abs(relative) - sigma_y(alpha)
         sigma = trial
         if excess > 0:
-            step = excess / (E + H_iso + H_kin)
+            low, high = 0.0, abs(relative) / (E + H_kin)
+            for _ in range(200):
+                step = 0.5 * (low + high)
+                if abs(relative) - (E + H_kin) * step - sigma_y(alpha + step) > 0:
+                    low = step
+                else:
+                    high = step
+            step = 0.5 * (low + high)
             sign = 1.0 if relative > 0 else -1.0
             plastic += step * sign
             alpha += step
@@ -53,8 +87,9 @@ def main():
     args = parser.parse_args()
     p = read_parameters(os.path.join(args.directory, "parameters.prm"))
     E = float(p["Material/Young's modulus"])
-    yield_stress = float(p["Material/J2 plasticity/Yield stress"])
-    H_iso = float(p["Material/J2 plasticity/Isotropic hardening modulus"])
+    sigma_y = yield_curve(p)
+    yield_stress = sigma_y(0)
+    law = p.get("Material/J2 plasticity/Hardening", "linear")
     H_kin = float(p["Material/J2 plasticity/Kinematic hardening modulus"])
 
     strains = []
@@ -62,7 +97,7 @@ def main():
         with open(name) as f:
             top = [r for r in csv.DictReader(f) if float(r["z"]) > 0]
         strains.append(sum(float(r["uz"]) / float(r["z"]) for r in top) / len(top))
-    path = exact_path(strains, E, yield_stress, H_iso, H_kin)
+    path = exact_path(strains, E, sigma_y, H_kin)
 
     worst = {"szz": 0.0, "other stress": 0.0, "plastic strain": 0.0}
     files = sorted(glob.glob(os.path.join(args.directory, "stress-*.csv")))
@@ -81,7 +116,7 @@ def main():
     yielded = [s for s, _ in path if abs(s) > yield_stress * (1 - 1e-12)]
     reversed_yield = any(s > 0 for s in yielded) and any(s < 0 for s in yielded)
     ok = reversed_yield and all(v <= args.tolerance for v in worst.values())
-    print(f"uniaxial J2 (H_iso = {H_iso:g}, H_kin = {H_kin:g}), {len(path)} increments, "
+    print(f"uniaxial J2 ({law} hardening, H_kin = {H_kin:g}), {len(path)} increments, "
           f"peak stresses {max(s for s, _ in path):.6g} and {min(s for s, _ in path):.6g}: "
           + ", ".join(f"{k} off by {v:.2e}" for k, v in worst.items())
           + f" (relative, allowed {args.tolerance:g})"

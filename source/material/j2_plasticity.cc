@@ -3,6 +3,7 @@
 #include <frictional_contact/model/j2_plasticity.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace FrictionalContact
 {
@@ -77,6 +78,33 @@ namespace FrictionalContact
                         "the part of the trial stress beyond the yield surface "
                         "a single step keeps, H_iso = 3 G gamma / (1 - gamma). "
                         "Empty: the modulus decides.");
+      prm.declare_entry("Hardening",
+                        "linear",
+                        Patterns::Anything(),
+                        "The isotropic hardening law, sigma_y of the equivalent "
+                        "plastic strain ep. linear: Yield stress + H_iso ep. "
+                        "Voce: Yield stress + (Saturation yield stress - Yield "
+                        "stress)(1 - exp(-Saturation rate ep)) + H_iso ep. flow "
+                        "curve: the points of Flow curve, piecewise linear and "
+                        "constant past the last (Yield stress and the hardening "
+                        "modulus are then not used).");
+      prm.declare_entry("Saturation yield stress",
+                        "1",
+                        Patterns::Anything(),
+                        "sigma_inf of Voce hardening: the yield stress it "
+                        "saturates at (force/area, > 0).");
+      prm.declare_entry("Saturation rate",
+                        "0",
+                        Patterns::Anything(),
+                        "delta of Voce hardening: how fast it saturates, per "
+                        "unit of equivalent plastic strain (>= 0).");
+      prm.declare_entry("Flow curve",
+                        "",
+                        Patterns::Anything(),
+                        "The measured flow curve of Hardening = flow curve: "
+                        "points 'plastic strain yield stress' separated by ',', "
+                        "e.g. '0 400, 0.05 480, 0.3 560': plastic strains from "
+                        "0, increasing, yield stresses > 0.");
       prm.declare_entry("Kinematic hardening modulus",
                         "0",
                         Patterns::Anything(),
@@ -103,14 +131,14 @@ namespace FrictionalContact
       if (measure != "von Mises" && measure != "deviator norm")
         Input::fail(own.path_of("Yield stress measure"), measure,
                     "'von Mises' or 'deviator norm'");
-      yield_stress = own.get_number("Yield stress");
+      double yield_stress = own.get_number("Yield stress");
       if (!(yield_stress > 0))
         Input::fail(own.path_of("Yield stress"), own.get("Yield stress"),
                     "a positive stress");
       if (measure == "deviator norm")
         yield_stress *= std::sqrt(1.5);
-      isotropic_hardening = own.get_number("Isotropic hardening modulus");
-      kinematic_hardening = own.get_number("Kinematic hardening modulus");
+      double isotropic_hardening = own.get_number("Isotropic hardening modulus");
+      kinematic_hardening        = own.get_number("Kinematic hardening modulus");
       for (const char *entry : {"Isotropic hardening modulus", "Kinematic hardening modulus"})
         if (!(own.get_number(entry) >= 0))
           Input::fail(own.path_of(entry), own.get(entry), "a modulus >= 0");
@@ -123,6 +151,57 @@ namespace FrictionalContact
                         "modulus");
           isotropic_hardening = 3. * elastic.shear_modulus * gamma / (1. - gamma);
         }
+      const std::string law = own.get("Hardening");
+      if (law == "linear")
+        hardening = IsotropicHardening::linear(yield_stress, isotropic_hardening);
+      else if (law == "Voce")
+        {
+          const double saturation = own.get_number("Saturation yield stress");
+          const double rate       = own.get_number("Saturation rate");
+          if (!(saturation > 0))
+            Input::fail(own.path_of("Saturation yield stress"),
+                        own.get("Saturation yield stress"), "a positive stress");
+          if (!(rate >= 0))
+            Input::fail(own.path_of("Saturation rate"), own.get("Saturation rate"),
+                        "a rate >= 0");
+          hardening =
+            IsotropicHardening::voce(yield_stress, saturation, rate, isotropic_hardening);
+        }
+      else if (law == "flow curve")
+        {
+          const std::string text = own.get("Flow curve");
+          std::vector<std::pair<double, double>> points;
+          for (const std::string &item : Utilities::split_string_list(text, ','))
+            {
+              const std::vector<std::string> pair = Utilities::split_string_list(item, ' ');
+              std::vector<double> numbers;
+              for (const std::string &word : pair)
+                if (!word.empty())
+                  {
+                    char        *end   = nullptr;
+                    const double value = std::strtod(word.c_str(), &end);
+                    if (end == word.c_str() || *end != '\0' || !std::isfinite(value))
+                      Input::fail(own.path_of("Flow curve"), text,
+                                  "points 'plastic strain yield stress' separated "
+                                  "by ',' ('" + word + "' is no number)");
+                    numbers.push_back(value);
+                  }
+              if (numbers.size() != 2)
+                Input::fail(own.path_of("Flow curve"), text,
+                            "points 'plastic strain yield stress' separated by "
+                            "',' ('" + item + "' is not two numbers)");
+              points.emplace_back(numbers[0], numbers[1]);
+            }
+          if (const std::string problem = IsotropicHardening::flow_curve_problem(points);
+              !problem.empty())
+            Input::fail(own.path_of("Flow curve"), text,
+                        "a flow curve from plastic strain 0 on, its plastic "
+                        "strains increasing and its yield stresses > 0 (" +
+                          problem + ")");
+          hardening = IsotropicHardening::flow_curve(std::move(points));
+        }
+      else
+        Input::fail(own.path_of("Hardening"), law, "'linear', 'Voce' or 'flow curve'");
       tangent_of_strain(elastic.bulk_modulus_3d,
                         elastic.shear_modulus,
                         0.,
@@ -154,9 +233,8 @@ namespace FrictionalContact
       const Tensor3 trial          = 2. * mu * (deviator(total) - plastic_before);
       const Tensor3 relative       = trial - back_before;
       const double  norm           = relative.norm();
-      const double  radius =
-        std::sqrt(2. / 3.) * (yield_stress + isotropic_hardening * alpha_before);
-      const double excess = norm - radius;
+      const double  radius = std::sqrt(2. / 3.) * hardening.yield_stress(alpha_before);
+      const double  excess = norm - radius;
 
       Tensor3 deviatoric = trial;
       double  step       = 0; // Delta gamma of the radial return
@@ -164,7 +242,7 @@ namespace FrictionalContact
       if (excess > 0)
         {
           n    = relative / norm;
-          step = excess / (2. * mu + 2. / 3. * (isotropic_hardening + kinematic_hardening));
+          step = return_step(norm, alpha_before, mu);
           deviatoric -= 2. * mu * step * n;
         }
       response.plastic  = step > 0;
@@ -197,9 +275,43 @@ namespace FrictionalContact
       // The consistent tangent of the radial return (Simo and Hughes, box
       // 3.2): kappa I (x) I + 2 mu theta P_dev - 2 mu theta_bar n (x) n.
       const double theta = 1. - 2. * mu * step / norm;
+      const double slope = hardening.slope(alpha_before + std::sqrt(2. / 3.) * step);
       const double theta_bar =
-        1. / (1. + (isotropic_hardening + kinematic_hardening) / (3. * mu)) - (1. - theta);
+        1. / (1. + (slope + kinematic_hardening) / (3. * mu)) - (1. - theta);
       tangent_of_strain(kappa, mu * theta, -2. * mu * theta_bar, n, response);
+    }
+
+
+
+    template <int dim>
+    double
+    J2Plasticity<dim>::return_step(const double norm,
+                                   const double alpha_before,
+                                   const double mu) const
+    {
+      // g(s) = norm - (2 mu + 2/3 H_kin) s - sqrt(2/3) sigma_y(alpha + sqrt(2/3) s)
+      // falls from g(0) > 0 (beyond the yield surface) to g(norm / c) < 0:
+      // Newton's method kept inside that bracket (bisection where a step
+      // leaves it). Linear hardening: the first step is the exact one.
+      const double c     = 2. * mu + 2. / 3. * kinematic_hardening;
+      const double root  = std::sqrt(2. / 3.);
+      const auto   g     = [&](const double s) {
+        return norm - c * s - root * hardening.yield_stress(alpha_before + root * s);
+      };
+      double low = 0, high = norm / c;
+      double s = (norm - root * hardening.yield_stress(alpha_before)) /
+                 (c + 2. / 3. * hardening.slope(alpha_before));
+      for (unsigned int k = 0; k < 100; ++k)
+        {
+          const double value = g(s);
+          if (std::abs(value) <= 1e-14 * norm)
+            break;
+          (value > 0 ? low : high) = s;
+          const double next =
+            s + value / (c + 2. / 3. * hardening.slope(alpha_before + root * s));
+          s = (next > low && next < high) ? next : 0.5 * (low + high);
+        }
+      return s;
     }
 
 
@@ -268,8 +380,8 @@ namespace FrictionalContact
     std::string
     J2Plasticity<dim>::describe() const
     {
-      return "J2 plasticity (yield stress " + Input::to_text(yield_stress) +
-             ", hardening " + Input::to_text(isotropic_hardening) + " isotropic, " +
+      return "J2 plasticity (yield stress " + Input::to_text(hardening.yield_stress(0)) +
+             ", hardening " + hardening.describe() + " isotropic, " +
              Input::to_text(kinematic_hardening) + " kinematic), " +
              this->elastic().describe();
     }
@@ -278,8 +390,9 @@ namespace FrictionalContact
       MaterialModel,
       J2Plasticity,
       "J2 plasticity",
-      "Small-strain von Mises plasticity with linear isotropic and kinematic "
-      "hardening (radial return, consistent tangent); its entries in "
+      "Small-strain von Mises plasticity with isotropic hardening (linear, "
+      "Voce or a measured flow curve) and linear kinematic hardening (radial "
+      "return, consistent tangent); its entries in "
       "Material/J2 plasticity.")
   } // namespace MaterialLaws
 } // namespace FrictionalContact

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <frictional_contact/model/isotropic_hardening.h>
 #include <frictional_contact/model/material.h>
 
 namespace FrictionalContact
@@ -7,9 +8,11 @@ namespace FrictionalContact
   namespace MaterialLaws
   {
     /**
-     * Small-strain J2 (von Mises) plasticity with associative flow and
-     * linear isotropic and kinematic (Prager) hardening, integrated by the
-     * radial return and linearised by its consistent tangent (Simo and
+     * Small-strain J2 (von Mises) plasticity with associative flow,
+     * isotropic hardening (linear, Voce or a measured flow curve:
+     * IsotropicHardening) and linear kinematic (Prager) hardening,
+     * integrated by the radial return (a scalar Newton solve where the
+     * hardening is not linear) and linearised by its consistent tangent (Simo and
      * Taylor 1985; Simo and Hughes, Computational Inelasticity, box 3.2).
      * The return works on the 3D stress: in 2D (plane strain only) the
      * out-of-plane strain is zero and the plastic strain has its
@@ -82,11 +85,16 @@ namespace FrictionalContact
       /// The derivatives at an elastic point, the same everywhere.
       MaterialResponse<dim> elastic_response;
 
-      /// sigma_y: the uniaxial (von Mises) yield stress before hardening.
-      double yield_stress = 0;
-      /// H_iso and H_kin: the slopes of the uniaxial stress against the
-      /// plastic strain that each hardening adds.
-      double isotropic_hardening = 0;
+      /// The plastic multiplier Delta gamma of the radial return from a
+      /// trial stress @p norm beyond the back stress, at the equivalent
+      /// plastic strain @p alpha_before.
+      double
+      return_step(const double norm, const double alpha_before, const double mu) const;
+
+      /// sigma_y(alpha): the uniaxial (von Mises) yield stress.
+      IsotropicHardening hardening;
+      /// H_kin: the slope of the uniaxial stress against the plastic
+      /// strain that kinematic hardening adds.
       double kinematic_hardening = 0;
     };
   } // namespace MaterialLaws
