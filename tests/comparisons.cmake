@@ -531,25 +531,8 @@ endforeach()
 
 # The same path with Voce hardening (1 rank) and a measured flow curve
 # passed beyond its last point (2 ranks): the exact curve to 1e-10.
-foreach(_test j2_uniaxial_voce j2_uniaxial_flow_curve.mpirun=2)
-  string(REGEX REPLACE "\\.mpirun=[0-9]+$" "" _base ${_test})
-  set(_ranks 0)
-  set(_processors 1)
-  if(_test MATCHES "mpirun=([0-9]+)$")
-    set(_ranks ${CMAKE_MATCH_1})
-    set(_processors ${_ranks})
-  endif()
-  configure_file(${_base}.prm ${CMAKE_CURRENT_BINARY_DIR}/${_test}/${_base}.prm @ONLY)
-  add_test(NAME ${_test}.run
-    COMMAND ${_runner} run ${_ranks} $<TARGET_FILE:contact> ${_base}.prm
-    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${_test})
-  set_tests_properties(${_test}.run PROPERTIES FIXTURES_SETUP ${_test}
-    ENVIRONMENT "${_environment}" PROCESSORS ${_processors})
-  add_test(NAME ${_test}.exact
-    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_uniaxial.py
-      ${CMAKE_CURRENT_BINARY_DIR}/${_test}/output-${_base} --tolerance 1e-10)
-  set_tests_properties(${_test}.exact PROPERTIES FIXTURES_REQUIRED ${_test})
-endforeach()
+add_scene_check(j2_uniaxial_voce 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+add_scene_check(j2_uniaxial_flow_curve 2 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 
 # Lame's sphere and tube past first yield (elastic-perfectly plastic J2, the
 # B-bar element): stresses at the peak and residual stresses after unloading

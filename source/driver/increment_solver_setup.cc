@@ -50,12 +50,12 @@ namespace FrictionalContact
         "semismooth Newton, which solves the internal force's Newton "
         "equations with the contact conditions");
     const double contrast = body.get_materials().largest_modulus_ratio();
-    if (contact.has_pairs() && contrast > solver.method->largest_modulus_ratio())
+    const double reachable = solver.method->largest_modulus_ratio();
+    if (contact.has_pairs() && contrast > reachable)
       throw InputError(
         "<Contact solver/Method> = " + solver.method_name +
         " does not reach its tolerance where the bodies' Young's moduli "
-        "differ by more than a factor of " +
-        Utilities::to_string(solver.method->largest_modulus_ratio()) +
+        "differ by more than a factor of " + Utilities::to_string(reachable) +
         " (here " + Utilities::to_string(contrast) +
         "): set <Contact solver/Method> = semismooth Newton, which solves "
         "such pairs");

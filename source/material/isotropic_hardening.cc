@@ -35,9 +35,8 @@ namespace FrictionalContact
   IsotropicHardening::flow_curve(std::vector<std::pair<double, double>> points)
   {
     IsotropicHardening h;
-    h.kind           = Kind::flow_curve;
-    h.initial_stress = points.front().second;
-    h.points         = std::move(points);
+    h.kind   = Kind::flow_curve;
+    h.points = std::move(points);
     return h;
   }
 
@@ -79,14 +78,13 @@ namespace FrictionalContact
                  (saturation_stress - initial_stress) * (1. - std::exp(-rate * alpha)) +
                  modulus * alpha;
         case Kind::flow_curve:
-          for (unsigned int k = 1; k < points.size(); ++k)
-            if (alpha < points[k].first)
-              {
-                const auto &[a0, s0] = points[k - 1];
-                const auto &[a1, s1] = points[k];
-                return s0 + (s1 - s0) * (alpha - a0) / (a1 - a0);
-              }
-          return points.back().second;
+          {
+            const unsigned int k = segment_end(alpha);
+            if (k == points.size())
+              return points.back().second;
+            const auto &[a0, s0] = points[k - 1];
+            return s0 + segment_slope(k) * (alpha - a0);
+          }
       }
     return 0;
   }
@@ -104,13 +102,31 @@ namespace FrictionalContact
           return (saturation_stress - initial_stress) * rate * std::exp(-rate * alpha) +
                  modulus;
         case Kind::flow_curve:
-          for (unsigned int k = 1; k < points.size(); ++k)
-            if (alpha < points[k].first)
-              return (points[k].second - points[k - 1].second) /
-                     (points[k].first - points[k - 1].first);
-          return 0;
+          {
+            const unsigned int k = segment_end(alpha);
+            return k == points.size() ? 0. : segment_slope(k);
+          }
       }
     return 0;
+  }
+
+
+
+  unsigned int
+  IsotropicHardening::segment_end(const double alpha) const
+  {
+    unsigned int k = 1;
+    while (k < points.size() && !(alpha < points[k].first))
+      ++k;
+    return k;
+  }
+
+
+
+  double
+  IsotropicHardening::segment_slope(const unsigned int k) const
+  {
+    return (points[k].second - points[k - 1].second) / (points[k].first - points[k - 1].first);
   }
 
 

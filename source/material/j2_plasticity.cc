@@ -3,7 +3,6 @@
 #include <frictional_contact/model/j2_plasticity.h>
 
 #include <cmath>
-#include <cstdlib>
 
 namespace FrictionalContact
 {
@@ -177,15 +176,9 @@ namespace FrictionalContact
               std::vector<double> numbers;
               for (const std::string &word : pair)
                 if (!word.empty())
-                  {
-                    char        *end   = nullptr;
-                    const double value = std::strtod(word.c_str(), &end);
-                    if (end == word.c_str() || *end != '\0' || !std::isfinite(value))
-                      Input::fail(own.path_of("Flow curve"), text,
-                                  "points 'plastic strain yield stress' separated "
-                                  "by ',' ('" + word + "' is no number)");
-                    numbers.push_back(value);
-                  }
+                  numbers.push_back(Input::parse_number(
+                    own.path_of("Flow curve"), word,
+                    "points 'plastic strain yield stress' separated by ','"));
               if (numbers.size() != 2)
                 Input::fail(own.path_of("Flow curve"), text,
                             "points 'plastic strain yield stress' separated by "

@@ -41,11 +41,22 @@ namespace FrictionalContact
     double
     slope(double alpha) const;
 
-    /// "linear, H = 1e4", "Voce, ...", "flow curve of 3 points".
+    /// The hardening as J2 plasticity's description names it: the modulus
+    /// ("10000") where linear, "Voce to ... at rate ... plus ...", "a flow
+    /// curve of 4 points".
     std::string
     describe() const;
 
   private:
+    /// The index of the first point of the flow curve beyond @p alpha
+    /// (points.size() past the last point).
+    unsigned int
+    segment_end(double alpha) const;
+
+    /// The slope of the flow curve between points k - 1 and k.
+    double
+    segment_slope(unsigned int k) const;
+
     enum class Kind
     {
       linear,
@@ -53,6 +64,7 @@ namespace FrictionalContact
       flow_curve
     };
     Kind   kind                 = Kind::linear;
+    /// sigma_0 of the linear and Voce laws (a flow curve has its points).
     double initial_stress       = 0;
     double saturation_stress    = 0;
     double rate                 = 0;
