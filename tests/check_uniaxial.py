@@ -1,11 +1,20 @@
 #!/usr/bin/env python3
-"""Checks a run of a cube in uniaxial stress (tests/j2_uniaxial_*.prm: rollers
-on three faces, the top face moved along z) against the exact stress-strain
-curve of J2 plasticity with isotropic hardening (linear, Voce or a flow
-curve) and linear kinematic hardening, which in uniaxial stress is the 1D
-law sigma = E (eps - eps_p), yield where |sigma - q| = sigma_y(alpha),
-q = H_kin eps_p (the Bauschinger effect), integrated increment by
-increment with the 1D radial return (its step by bisection).
+"""Checks a run of a cube in uniaxial stress (tests/j2_uniaxial_*.prm,
+tests/j2_finite_*.prm: rollers on three faces, the top face moved along z)
+against the exact stress-strain curve of J2 plasticity with isotropic
+hardening (linear, Voce or a flow curve) and linear kinematic hardening,
+which in uniaxial stress is the 1D law sigma = E (eps - eps_p), yield where
+|sigma - q| = sigma_y(alpha), q = H_kin eps_p (the Bauschinger effect),
+integrated increment by increment with the 1D radial return (its step by
+bisection).
+
+At finite strain (<Material/Kinematics> = finite strain: the Hencky law with
+the exponential map) the same 1D law holds between the logarithmic strain
+eps = ln(1 + u_z / z) and the Kirchhoff stress tau; the lateral logarithmic
+strain is then -nu tau / E - eps_p / 2 (elastic contraction and isochoric
+flow), the lateral stretch lambda = exp of it (checked against 1 + u_x / x
+of the vertices off the axis), and the Cauchy stress tau / J with
+J = exp(eps + 2 eps_lateral).
 
 usage: check_uniaxial.py OUTPUT_DIR --tolerance 1e-10
 
@@ -14,8 +23,10 @@ increment displacement-NNNNN.csv (the strain eps = u_z / z of the top
 vertices, all equal) and stress-NNNNN.csv: in every cell s_zz must equal the
 exact sigma, the other stress components vanish, and the equivalent plastic
 strain equal alpha, all within the tolerance relative to sigma_y (strain:
-relative to sigma_y / E). The path must leave the elastic range and come
-back in both directions, or the check proves little.
+relative to sigma_y / E, at finite strain to the path's largest strain if
+larger). A small-strain path must leave the elastic range
+and come back in both directions, a finite-strain one yield and reach a
+logarithmic strain of 0.5, or the check proves little.
 """
 import argparse
 import csv
@@ -52,7 +63,7 @@ def yield_curve(p):
 
 
 def exact_path(strains, E, sigma_y, H_kin):
-    """(sigma, alpha) after each strain of the path, by the 1D radial return:
+    """(sigma, alpha, eps_p) after each strain of the path, by the 1D radial return:
     the plastic step s solves |sigma_trial - q| - (E + H_kin) s =
     sigma_y(alpha + s), by bisection (linear hardening: exactly)."""
     plastic, alpha, back = 0.0, 0.0, 0.0
@@ -76,7 +87,7 @@ def exact_path(strains, E, sigma_y, H_kin):
             alpha += step
             back += H_kin * step * sign
             sigma = trial - E * step * sign
-        path.append((sigma, alpha))
+        path.append((sigma, alpha, plastic))
     return path
 
 
@@ -92,18 +103,37 @@ def main():
     law = p.get("Material/J2 plasticity/Hardening", "linear")
     H_kin = float(p["Material/J2 plasticity/Kinematic hardening modulus"])
 
-    strains = []
+    finite = p.get("Material/Kinematics", "small strain") == "finite strain"
+    nu = float(p["Material/Poisson's ratio"])
+    strains, lateral_stretches = [], []
     for name in sorted(glob.glob(os.path.join(args.directory, "displacement-*.csv"))):
         with open(name) as f:
-            top = [r for r in csv.DictReader(f) if float(r["z"]) > 0]
-        strains.append(sum(float(r["uz"]) / float(r["z"]) for r in top) / len(top))
+            rows = list(csv.DictReader(f))
+        top = [r for r in rows if float(r["z"]) > 0]
+        stretch = sum(1 + float(r["uz"]) / float(r["z"]) for r in top) / len(top)
+        strains.append(math.log(stretch) if finite else stretch - 1)
+        lateral_stretches.append([1 + float(r["ux"]) / float(r["x"])
+                                  for r in rows if float(r["x"]) > 0])
     path = exact_path(strains, E, sigma_y, H_kin)
 
     worst = {"szz": 0.0, "other stress": 0.0, "plastic strain": 0.0}
+    if finite:
+        worst["lateral stretch"] = 0.0
     files = sorted(glob.glob(os.path.join(args.directory, "stress-*.csv")))
     if len(files) != len(strains) or not files:
         sys.exit(f"{len(files)} stress tables for {len(strains)} increments")
-    for name, (sigma, alpha) in zip(files, path):
+    # Strains relative to sigma_y / E, or at finite strain to the largest
+    # strain of the path where it is larger (1e-10 of 1 is round-off).
+    strain_scale = max([yield_stress / E] + ([abs(e) for e in strains] if finite else []))
+    for name, (tau, alpha, plastic), eps, lateral in zip(files, path, strains,
+                                                         lateral_stretches):
+        sigma = tau
+        if finite:
+            eps_lateral = -nu * tau / E - plastic / 2
+            sigma = tau / math.exp(eps + 2 * eps_lateral)
+            worst["lateral stretch"] = max(
+                [worst["lateral stretch"]]
+                + [abs(s - math.exp(eps_lateral)) / strain_scale for s in lateral])
         with open(name) as f:
             for row in csv.DictReader(f):
                 worst["szz"] = max(worst["szz"], abs(float(row["szz"]) - sigma) / yield_stress)
@@ -112,15 +142,24 @@ def main():
                                                 abs(float(row[c])) / yield_stress)
                 worst["plastic strain"] = max(
                     worst["plastic strain"],
-                    abs(float(row["equivalent_plastic_strain"]) - alpha) * E / yield_stress)
-    yielded = [s for s, _ in path if abs(s) > yield_stress * (1 - 1e-12)]
-    reversed_yield = any(s > 0 for s in yielded) and any(s < 0 for s in yielded)
-    ok = reversed_yield and all(v <= args.tolerance for v in worst.values())
-    print(f"uniaxial J2 ({law} hardening, H_kin = {H_kin:g}), {len(path)} increments, "
-          f"peak stresses {max(s for s, _ in path):.6g} and {min(s for s, _ in path):.6g}: "
+                    abs(float(row["equivalent_plastic_strain"]) - alpha) / strain_scale)
+    yielded = [s for s, _, _ in path if abs(s) > yield_stress * (1 - 1e-12)]
+    # A small-strain path must yield both ways (the reversal is the point);
+    # a finite-strain one yield and reach a logarithmic strain of 0.5.
+    if finite:
+        covered = bool(yielded) and max(abs(e) for e in strains) >= 0.5
+        shortfall = "; the path does not yield and reach |eps| = 0.5"
+    else:
+        covered = any(s > 0 for s in yielded) and any(s < 0 for s in yielded)
+        shortfall = "; the path does not yield both ways"
+    ok = covered and all(v <= args.tolerance for v in worst.values())
+    kind = "finite-strain (logarithmic strain " + f"{strains[-1]:.4g})" if finite else "small-strain"
+    print(f"uniaxial {kind} J2 ({law} hardening, H_kin = {H_kin:g}), {len(path)} increments, "
+          f"peak stresses {max(s for s, _, _ in path):.6g} and "
+          f"{min(s for s, _, _ in path):.6g}: "
           + ", ".join(f"{k} off by {v:.2e}" for k, v in worst.items())
           + f" (relative, allowed {args.tolerance:g})"
-          + ("" if reversed_yield else "; the path does not yield both ways"))
+          + ("" if covered else shortfall))
     print("PASSED" if ok else "FAILED")
     return 0 if ok else 1
 

@@ -534,6 +534,19 @@ endforeach()
 add_scene_check(j2_uniaxial_voce 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 add_scene_check(j2_uniaxial_flow_curve 2 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 
+# Finite-strain J2 plasticity (Hencky, exponential map) in homogeneous
+# uniaxial stress: compressed to a logarithmic strain of -1 and pulled to
+# +0.7, with linear and with Voce hardening, on 1 and 3 ranks: Cauchy
+# stress, lateral stretch and equivalent plastic strain exact to 1e-10
+# (check_uniaxial.py). Objectivity: stretched past yield, then turned
+# rigidly by 90 degrees on 2 ranks, the stress turns with the body and the
+# plastic strains stay, to 1e-10 (check_rotation.py).
+add_scene_check(j2_finite_compression 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+add_scene_check(j2_finite_compression_voce 3 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+add_scene_check(j2_finite_tension 3 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+add_scene_check(j2_finite_tension_voce 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+add_scene_check(j2_finite_rotation 2 turned check_rotation.py OUTPUT --tolerance 1e-10)
+
 # Lame's sphere and tube past first yield (elastic-perfectly plastic J2, the
 # B-bar element): stresses at the peak and residual stresses after unloading
 # within 2 % of p of Hill's closed form, the elastic-plastic radius within

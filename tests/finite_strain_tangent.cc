@@ -4,7 +4,9 @@
 // coupling through the cell's mean volume ratio, or the point's), at the
 // Gauss points and at the Gauss-Lobatto points (the corners'), and of J2
 // plasticity at small strain on the B-bar element (flowing at every
-// point: the consistent tangent of the return map): a ball's
+// point: the consistent tangent of the return map) and at finite strain
+// (the exponential map's tangent from a committed plastic state of another
+// deformation, on the mean-dilatation element and on the standard one): a ball's
 // mesh (distorted cells) under a smooth displacement of 20 % strains, K_T v
 // compared with
 // (f(u + h v) - f(u - h v)) / 2h for a direction v over every free dof.
@@ -37,9 +39,16 @@ namespace
                                 "  set Poisson's ratio = 0.45\n" +
                                 (kinematics == "finite strain" ?
                                    "  set Quadrature = " + quadrature + "\n" :
+                                   std::string()) +
+                                (law == "J2 plasticity" ?
                                    "  subsection J2 plasticity\n"
-                                   "    set Yield stress = 0.001\n  end\n") +
-                                (volume_ratio.empty() ?
+                                   "    set Yield stress = 0.001\n"
+                                   "    set Isotropic hardening modulus = 0.05\n  end\n" :
+                                   std::string()) +
+                                (law == "J2 plasticity" && !volume_ratio.empty() ?
+                                   "  set Formulation = " + volume_ratio + "\n" :
+                                   std::string()) +
+                                (volume_ratio.empty() || law == "J2 plasticity" ?
                                    std::string() :
                                    "  subsection Nearly incompressible neo-Hookean\n"
                                    "    set Volume ratio = " + volume_ratio + "\n  end\n") +
@@ -52,7 +61,7 @@ namespace
 
     // u: a smooth field of about 20 % strain; v: another one.
     using Vector = TrilinosWrappers::MPI::Vector;
-    Vector u = body.make_vector(), v = body.make_vector();
+    Vector u = body.make_vector(), v = body.make_vector(), first = body.make_vector();
     const IndexSet &owned = body.locally_owned_dofs();
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -63,10 +72,16 @@ namespace
               const Point<dim> &x = cell->vertex(vertex);
               if (!owned.is_element(g))
                 continue;
-              u[g] = 0.2 * std::sin(1.3 * x[0] + 0.7 * x[dim - 1] + c);
+              u[g]     = 0.2 * std::sin(1.3 * x[0] + 0.7 * x[dim - 1] + c);
+              first[g] = 0.15 * std::sin(0.9 * x[0] - 1.1 * x[dim - 1] + 2. * c);
               v[g] = std::cos(2.1 * x[0] - 0.4 * x[dim - 1] + 2. * c);
             }
     u.compress(VectorOperation::insert);
+    first.compress(VectorOperation::insert);
+    // The finite-strain plastic law from a committed plastic state of
+    // another deformation (Cp^-1 not I, principal axes not those of u's).
+    if (law == "J2 plasticity" && kinematics == "finite strain")
+      model.commit(first);
     v.compress(VectorOperation::insert);
     body.get_constraints().set_zero(v);
 
@@ -105,9 +120,12 @@ namespace
           std::to_string(points) + " points flowing";
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << dim << "D, " << law
-                << (volume_ratio.empty() ? "" : " (volume ratio: " + volume_ratio + ")")
+                << (volume_ratio.empty() ? "" :
+                    law == "J2 plasticity" ? " (formulation: " + volume_ratio + ")" :
+                                             " (volume ratio: " + volume_ratio + ")")
                 << (quadrature == "Gauss" ? "" : " (" + quadrature + " points)")
-                << (kinematics == "finite strain" ? "" : " (" + kinematics + ", B-bar" + flow + ")")
+                << (kinematics == "finite strain" ? "" : " (" + kinematics + ", B-bar")
+                << flow << (kinematics == "finite strain" ? "" : ")")
                 << ": K_T v against central differences: "
                 << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
     if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -138,4 +156,11 @@ main(int argc, char *argv[])
   check<3>("nearly incompressible neo-Hookean", "point", "Gauss-Lobatto");
   check<2>("J2 plasticity", "", "Gauss", "small strain");
   check<3>("J2 plasticity", "", "Gauss", "small strain");
+  // The finite-strain J2 law (Hencky, exponential map) on the
+  // mean-dilatation element (auto) and on the standard one.
+  for (const std::string formulation : {"auto", "standard"})
+    {
+      check<2>("J2 plasticity", formulation);
+      check<3>("J2 plasticity", formulation);
+    }
 }

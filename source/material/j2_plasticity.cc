@@ -1,6 +1,7 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
 #include <frictional_contact/model/j2_plasticity.h>
+#include <frictional_contact/model/spectral_decomposition.h>
 
 #include <cmath>
 
@@ -11,23 +12,6 @@ namespace FrictionalContact
     namespace
     {
       using Tensor3 = SymmetricTensor<2, 3>;
-
-      /// The symmetric 3D tensor of the history values from @p values[0..5].
-      Tensor3
-      read_tensor(const double *values)
-      {
-        Tensor3 t;
-        for (unsigned int k = 0; k < Tensor3::n_independent_components; ++k)
-          t.access_raw_entry(k) = values[k];
-        return t;
-      }
-
-      void
-      write_tensor(const Tensor3 &t, double *values)
-      {
-        for (unsigned int k = 0; k < Tensor3::n_independent_components; ++k)
-          values[k] = t.access_raw_entry(k);
-      }
 
       /// The 3D strain of the element: the deviator of the in-plane strain
       /// @p strain (its out-of-plane part zero in plane strain) and the
@@ -141,6 +125,12 @@ namespace FrictionalContact
       for (const char *entry : {"Isotropic hardening modulus", "Kinematic hardening modulus"})
         if (!(own.get_number(entry) >= 0))
           Input::fail(own.path_of(entry), own.get(entry), "a modulus >= 0");
+      if (elastic.finite_strain && kinematic_hardening != 0)
+        Input::fail(own.path_of("Kinematic hardening modulus"),
+                    own.get("Kinematic hardening modulus"),
+                    "0 at finite strain (the body '" + own.body() +
+                      "' is at finite strain, whose J2 law hardens "
+                      "isotropically only)");
       if (const std::string ratio = own.get("Isotropic hardening ratio"); !ratio.empty())
         {
           const double gamma = own.get_number("Isotropic hardening ratio");
@@ -213,34 +203,29 @@ namespace FrictionalContact
                                 MaterialResponse<dim>         &response,
                                 double                        *new_history) const
     {
+      if (this->elastic().finite_strain)
+        {
+          evaluate_finite_strain(
+            strain, volumetric_strain, history, with_tangent, response, new_history);
+          return;
+        }
       const double  mu    = this->elastic().shear_modulus;
       const double  kappa = this->elastic().bulk_modulus_3d;
       const Tensor3 I     = unit_symmetric_tensor<3>();
 
       // The trial state: the strain beyond the committed plastic strain,
       // elastic.
-      const Tensor3 plastic_before = read_tensor(history);
+      const Tensor3 plastic_before = read_history_tensor(history);
       const double  alpha_before   = history[6];
-      const Tensor3 back_before    = read_tensor(history + 7);
+      const Tensor3 back_before    = read_history_tensor(history + 7);
       const Tensor3 total          = strain_3d(strain, volumetric_strain);
       const Tensor3 trial          = 2. * mu * (deviator(total) - plastic_before);
-      const Tensor3 relative       = trial - back_before;
-      const double  norm           = relative.norm();
-      const double  radius = std::sqrt(2. / 3.) * hardening.yield_stress(alpha_before);
-      const double  excess = norm - radius;
-
-      Tensor3 deviatoric = trial;
-      double  step       = 0; // Delta gamma of the radial return
-      Tensor3 n;
-      if (excess > 0)
-        {
-          n    = relative / norm;
-          step = return_step(norm, alpha_before, mu);
-          deviatoric -= 2. * mu * step * n;
-        }
-      response.plastic  = step > 0;
-      response.at_yield = excess > -1e-10 * radius;
-      const Tensor3 stress = deviatoric + kappa * volumetric_strain * I;
+      const RadialReturn flow_step = radial_return(trial - back_before, alpha_before);
+      const double       step      = flow_step.step;
+      const Tensor3     &n         = flow_step.n;
+      response.plastic             = step > 0;
+      response.at_yield            = flow_step.at_yield;
+      const Tensor3 stress = trial - 2. * mu * step * n + kappa * volumetric_strain * I;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           response.stress[i][j] = stress[i][j];
@@ -249,9 +234,9 @@ namespace FrictionalContact
 
       if (new_history != nullptr)
         {
-          write_tensor(plastic_before + step * n, new_history);
+          write_history_tensor(plastic_before + step * n, new_history);
           new_history[6] = alpha_before + std::sqrt(2. / 3.) * step;
-          write_tensor(back_before + 2. / 3. * kinematic_hardening * step * n,
+          write_history_tensor(back_before + 2. / 3. * kinematic_hardening * step * n,
                        new_history + 7);
         }
       if (!with_tangent)
@@ -265,13 +250,36 @@ namespace FrictionalContact
             elastic_response.volumetric_stress_by_volumetric_strain;
           return;
         }
-      // The consistent tangent of the radial return (Simo and Hughes, box
-      // 3.2): kappa I (x) I + 2 mu theta P_dev - 2 mu theta_bar n (x) n.
-      const double theta = 1. - 2. * mu * step / norm;
-      const double slope = hardening.slope(alpha_before + std::sqrt(2. / 3.) * step);
+      tangent_of_strain(kappa, flow_step.shear, flow_step.flow, n, response);
+    }
+
+
+
+    template <int dim>
+    RadialReturn
+    J2Plasticity<dim>::radial_return(const SymmetricTensor<2, 3> &relative,
+                                     const double                 alpha_before) const
+    {
+      const double mu     = this->elastic().shear_modulus;
+      const double norm   = relative.norm();
+      const double radius = std::sqrt(2. / 3.) * hardening.yield_stress(alpha_before);
+      const double excess = norm - radius;
+      RadialReturn result;
+      result.at_yield = excess > -1e-10 * radius;
+      result.shear    = mu;
+      if (!(excess > 0))
+        return result;
+      result.n    = relative / norm;
+      result.step = return_step(norm, alpha_before, mu);
+      // The consistent tangent (Simo and Hughes, box 3.2): 2 mu theta P_dev
+      // - 2 mu theta_bar n (x) n on the deviator.
+      const double theta = 1. - 2. * mu * result.step / norm;
+      const double slope = hardening.slope(alpha_before + std::sqrt(2. / 3.) * result.step);
       const double theta_bar =
         1. / (1. + (slope + kinematic_hardening) / (3. * mu)) - (1. - theta);
-      tangent_of_strain(kappa, mu * theta, -2. * mu * theta_bar, n, response);
+      result.shear = mu * theta;
+      result.flow  = -2. * mu * theta_bar;
+      return result;
     }
 
 
@@ -364,7 +372,24 @@ namespace FrictionalContact
     SymmetricTensor<2, 3>
     J2Plasticity<dim>::plastic_strain(const double *history) const
     {
-      return read_tensor(history);
+      if (!this->elastic().finite_strain)
+        return read_history_tensor(history);
+      // ln(Cp) / 2 = -ln(Cp^-1) / 2.
+      const SpectralDecomposition inverse_plastic(unit_symmetric_tensor<3>() +
+                                                  read_history_tensor(history));
+      return inverse_plastic.map([](const double x) { return -0.5 * std::log(x); });
+    }
+
+
+
+    template <int dim>
+    typename MaterialModel<dim>::VolumeRatio
+    J2Plasticity<dim>::volume_ratio() const
+    {
+      using VolumeRatio = typename MaterialModel<dim>::VolumeRatio;
+      if (!this->elastic().finite_strain)
+        return VolumeRatio::none;
+      return this->elastic().mean_volume_ratio ? VolumeRatio::cell_mean : VolumeRatio::point;
     }
 
 
@@ -375,17 +400,23 @@ namespace FrictionalContact
     {
       return "J2 plasticity (yield stress " + Input::to_text(hardening.yield_stress(0)) +
              ", hardening " + hardening.describe() + " isotropic, " +
-             Input::to_text(kinematic_hardening) + " kinematic), " +
-             this->elastic().describe();
+             Input::to_text(kinematic_hardening) + " kinematic" +
+             (this->elastic().finite_strain ?
+                std::string(this->elastic().mean_volume_ratio ?
+                              "; Hencky, exponential map, mean dilatation" :
+                              "; Hencky, exponential map") :
+                std::string()) +
+             "), " + this->elastic().describe();
     }
 
     FRICTIONAL_CONTACT_REGISTER_PLUGIN(
       MaterialModel,
       J2Plasticity,
       "J2 plasticity",
-      "Small-strain von Mises plasticity with isotropic hardening (linear, "
-      "Voce or a measured flow curve) and linear kinematic hardening (radial "
-      "return, consistent tangent); its entries in "
-      "Material/J2 plasticity.")
+      "Von Mises plasticity with isotropic hardening (linear, Voce or a "
+      "measured flow curve) and, at small strain, linear kinematic hardening "
+      "(radial return, consistent tangent). At finite strain (<Material/"
+      "Kinematics>) F = Fe Fp with the Hencky elastic law and the exponential "
+      "map; its entries in Material/J2 plasticity.")
   } // namespace MaterialLaws
 } // namespace FrictionalContact

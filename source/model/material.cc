@@ -202,7 +202,8 @@ namespace FrictionalContact
     mean_dilatation = formulation == "B-bar" ||
                       (formulation == "auto" && !finite_strain &&
                        (locks || mean_dilatation_for_flow));
-    standard_forced = formulation == "standard" || finite_strain;
+    mean_volume_ratio = finite_strain && isochoric && formulation == "auto";
+    standard_forced   = formulation == "standard" || (finite_strain && !mean_volume_ratio);
 
     const double mu = youngs_modulus / (2. * (1. + poissons_ratio));
     double       lambda = youngs_modulus * poissons_ratio /

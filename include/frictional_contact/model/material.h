@@ -133,6 +133,10 @@ namespace FrictionalContact
     bool   plane_stress;
     /// Whether the mean-dilatation (B-bar) element is used.
     bool   mean_dilatation;
+    /// At finite strain, whether a law that flows isochorically takes the
+    /// cell's mean volume ratio (the mean-dilatation element of Simo,
+    /// Taylor and Pister; Formulation = auto) rather than the point's.
+    bool   mean_volume_ratio;
     /// Whether the body is at finite strain (<Material/Kinematics>): the
     /// law's strain is then the Green-Lagrange strain E and its stress the
     /// second Piola-Kirchhoff stress S.
