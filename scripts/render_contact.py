@@ -366,6 +366,7 @@ def main():
         # within the candidate face.
         face.UpdatePipeline(t)
         touching.UpdatePipeline(t)
+        (cut if cut is not None else warped).UpdatePipeline(t)
         # The colour ranges of this time (the face brought to it first).
         for display in (body, pressure):
             display.RescaleTransferFunctionToDataRange(False, True)

@@ -112,8 +112,9 @@ def main():
         top = [r for r in rows if float(r["z"]) > 0]
         stretch = sum(1 + float(r["uz"]) / float(r["z"]) for r in top) / len(top)
         strains.append(math.log(stretch) if finite else stretch - 1)
+        width = max(float(r["x"]) for r in rows)
         lateral_stretches.append([1 + float(r["ux"]) / float(r["x"])
-                                  for r in rows if float(r["x"]) > 0])
+                                  for r in rows if float(r["x"]) > 1e-6 * width])
     path = exact_path(strains, E, sigma_y, H_kin)
 
     worst = {"szz": 0.0, "other stress": 0.0, "plastic strain": 0.0}

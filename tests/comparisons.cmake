@@ -110,7 +110,9 @@ endfunction()
 # wrote: the test <scene>.<check> runs the Python script and arguments that
 # follow, OUTPUT in them standing for the run's output folder
 # (output-<scene>).
-function(add_scene_check _scene _ranks _check)
+# add_scene_run(<scene> <ranks>): runs tests/<scene>.prm on <ranks> ranks
+# in build/tests/<scene>/ as the fixture <scene>.
+function(add_scene_run _scene _ranks)
   set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_scene})
   configure_file(${_scene}.prm ${_directory}/${_scene}.prm @ONLY)
   set(_run ${_scene})
@@ -123,6 +125,11 @@ function(add_scene_check _scene _ranks _check)
     WORKING_DIRECTORY ${_directory})
   set_tests_properties(${_run}.run PROPERTIES FIXTURES_SETUP ${_scene}
     ENVIRONMENT "${_environment}" PROCESSORS ${_ranks})
+endfunction()
+
+function(add_scene_check _scene _ranks _check)
+  add_scene_run(${_scene} ${_ranks})
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_scene})
   list(TRANSFORM ARGN REPLACE "^OUTPUT" "${_directory}/output-${_scene}")
   list(GET ARGN 0 _script)
   list(REMOVE_AT ARGN 0)
@@ -546,6 +553,39 @@ add_scene_check(j2_finite_compression_voce 3 exact check_uniaxial.py OUTPUT --to
 add_scene_check(j2_finite_tension 3 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 add_scene_check(j2_finite_tension_voce 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 add_scene_check(j2_finite_rotation 2 turned check_rotation.py OUTPUT --tolerance 1e-10)
+
+# The small-strain limit: step-42's indentation pressed a fifth as deep
+# (plastic strains below 1 %), at small and at finite strain on the same
+# mesh: die force, plastic zone and plastic strain integral within 1 %
+# (check_small_strain_limit.py).
+add_scene_run(step42_shallow_small_strain 2)
+add_scene_check(step42_shallow_finite_strain 2 limit check_small_strain_limit.py
+  ${CMAKE_CURRENT_BINARY_DIR}/step42_shallow_small_strain/output-step42_shallow_small_strain
+  OUTPUT --tolerance 0.01)
+set_tests_properties(step42_shallow_finite_strain.limit PROPERTIES
+  FIXTURES_REQUIRED "step42_shallow_finite_strain;step42_shallow_small_strain")
+
+# Upsetting a billet between flat dies to 50 %: frictionless it stays
+# homogeneous, the closed form's uniaxial state to 1e-10 in every cell
+# (check_uniaxial.py); the shipped scene (friction 0.1) keeps its mean die
+# pressure within 5 % of the slab estimate (check_upsetting.py), and its die
+# force changes less from each of three meshes to the next
+# (check_refinement.py; the shipped run is the finest).
+add_scene_check(billet_frictionless 2 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
+set(_billet_run ${CMAKE_CURRENT_BINARY_DIR}/scenes/billet_upsetting/1/output-billet-upsetting)
+add_test(NAME billet_upsetting.slab
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_upsetting.py
+          ${_billet_run} --tolerance 0.05)
+set_tests_properties(billet_upsetting.slab PROPERTIES FIXTURES_REQUIRED scene_billet_upsetting)
+add_scene_run(billet_mesh_0 1)
+add_scene_run(billet_mesh_1 1)
+add_test(NAME billet_upsetting.refinement
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_refinement.py
+          ${CMAKE_CURRENT_BINARY_DIR}/billet_mesh_0/output-billet_mesh_0/statistics
+          ${CMAKE_CURRENT_BINARY_DIR}/billet_mesh_1/output-billet_mesh_1/statistics
+          ${_billet_run}/statistics --column "Contact force z" --at-most 0.05)
+set_tests_properties(billet_upsetting.refinement PROPERTIES
+  FIXTURES_REQUIRED "scene_billet_upsetting;billet_mesh_0;billet_mesh_1")
 
 # Lame's sphere and tube past first yield (elastic-perfectly plastic J2, the
 # B-bar element): stresses at the peak and residual stresses after unloading
