@@ -94,6 +94,14 @@ namespace
     IncrementResponse<dim> response(model, nullptr, u, no_motion);
     response.internal_force_change(no_motion, plus, true);
     body.stiffness().vmult(K_v, v);
+    // Symmetry: w . K v = v . K w for another direction w (every law here
+    // has a potential, the return maps an incremental one).
+    const double asymmetry = [&] {
+      Vector w = u, K_w = body.make_vector();
+      body.get_constraints().set_zero(w);
+      body.stiffness().vmult(K_w, w);
+      return std::abs(w * K_v - v * K_w) / (K_v.l2_norm() * w.l2_norm());
+    }();
     const double h = 1e-6;
     Vector step = v;
     step *= h;
@@ -127,7 +135,10 @@ namespace
                 << (kinematics == "finite strain" ? "" : " (" + kinematics + ", B-bar")
                 << flow << (kinematics == "finite strain" ? "" : ")")
                 << ": K_T v against central differences: "
-                << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER") << std::endl;
+                << (difference < 1e-6 ? "agree within 1e-6" : "DIFFER")
+                << (asymmetry < 1e-12 ? ", K_T symmetric" : ", K_T NOT SYMMETRIC") << std::endl;
+    if (!(asymmetry < 1e-12) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "  asymmetry " << asymmetry << std::endl;
     if (!(difference < 1e-6) && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << "  relative difference " << difference << std::endl;
   }
