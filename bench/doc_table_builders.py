@@ -309,6 +309,29 @@ def finite_strain(root):
                      "increment in elastic solves", "finite / small"], body)
 
 
+def forming(part):
+    """bench/forming.py: the rows of @p part (billet: each mesh level and
+    formulation; step42: each kinematics), with the finite / small ratio
+    per increment for step42."""
+    def table(root):
+        chosen = [r for r in rows(root, "forming.csv") if r["part"] == part]
+        unit = {r["variant"]: float(r["increment_in_elastic_solves"]) for r in chosen}
+        body = []
+        for r in chosen:
+            row = [r["level"]] if part == "billet" else []
+            row += [r["variant"], r["ranks"], thousands(r["d"]), r["increments"],
+                    r["newton_iterations"], r["cuts"], f"{float(r['force']):.5g}",
+                    r["increment_in_elastic_solves"]]
+            if part.startswith("step42"):
+                row.append(f"{unit[r['variant']] / unit['small strain']:.2f}")
+            body.append(row)
+        header = (["refinements"] if part == "billet" else []) + \
+            ["variant", "ranks", "d", "increments", "Newton steps", "cuts", "die force",
+             "increment in elastic solves"] + (["/ small strain"] if part.startswith("step42") else [])
+        return markdown(header, body)
+    return table
+
+
 def coarse_solver(root):
     """bench/coarse_solver.py: each scene's last pair of rows, MUMPS and
     KLU on ML's coarsest level."""
@@ -486,6 +509,9 @@ TABLES = {
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,
+    "forming-billet": forming("billet"),
+    "forming-step42": forming("step42"),
+    "forming-step42-shallow": forming("step42 shallow"),
     "coarse-solver": coarse_solver,
     "extrapolated-start": extrapolated_start,
     "ironing-3d": ironing_3d,

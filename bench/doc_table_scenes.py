@@ -34,6 +34,8 @@ SCENE_POINTS = {
     "step42_indentation": "deal.II's step-42: an elasto-plastic cube (J2) indented by a rigid ball, the mesh adapted",
     "ironing_2d": "ironing: a rigid die pressed into a neo-Hookean block and slid along it with friction (finite strain)",
     "o_ring_2d": "an O-ring squeezed by 25 % between two plates (neo-Hookean, finite strain, plane strain)",
+    "billet_upsetting": "forming: a quarter of an aluminium billet (J2 with Voce hardening, finite strain) upset by 50 % between plane dies with friction 0.1: it barrels",
+    "billet_upsetting_sticking": "the billet upset by 25 % with friction 1: the faces stick, the side folds over onto the die",
 }
 
 

@@ -553,6 +553,11 @@ add_scene_check(j2_finite_compression_voce 3 exact check_uniaxial.py OUTPUT --to
 add_scene_check(j2_finite_tension 3 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 add_scene_check(j2_finite_tension_voce 1 exact check_uniaxial.py OUTPUT --tolerance 1e-10)
 add_scene_check(j2_finite_rotation 2 turned check_rotation.py OUTPUT --tolerance 1e-10)
+# Necking: a round bar with a 0.5 % neck imperfection pulled past its peak
+# load on 2 ranks: the peak within 1 % below Considere's maximum of the
+# homogeneous bar, the force falling after it, the neck at the imperfection
+# (check_necking.py).
+add_scene_check(j2_finite_necking 2 considere check_necking.py OUTPUT --tolerance 0.01 --neck 0.1)
 
 # The small-strain limit: step-42's indentation pressed a fifth as deep
 # (plastic strains below 1 %), at small and at finite strain on the same

@@ -4,7 +4,7 @@ namespace FrictionalContact
 {
   SpectralDecomposition::SpectralDecomposition(const SymmetricTensor<2, 3> &X)
   {
-    const auto pairs = eigenvectors(X, SymmetricTensorEigenvectorMethod::jacobi);
+    const auto pairs = eigenvectors(X, SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
     for (unsigned int a = 0; a < 3; ++a)
       {
         values[a] = pairs[a].first;

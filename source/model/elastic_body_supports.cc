@@ -9,40 +9,44 @@ namespace FrictionalContact
 {
   template <int dim>
   Tensor<1, dim>
-  ElasticBody<dim>::support_reaction(const Vector &u,
-                                     const double  load_factor) const
+  ElasticBody<dim>::support_reaction(const Vector  &u,
+                                     const double   load_factor,
+                                     const Supports supports) const
   {
     // The force at a hanging node acts on the nodes it hangs from.
     Vector residual(owned_dofs, mpi_communicator);
     element_forces(u, load_factor, hanging_node_constraints, residual);
-    return sum_at_fixed_dofs(residual);
+    return sum_at_fixed_dofs(residual, supports);
   }
 
 
 
   template <int dim>
   Tensor<1, dim>
-  ElasticBody<dim>::support_reaction_of(const Vector &internal_force,
-                                        const double  load_factor) const
+  ElasticBody<dim>::support_reaction_of(const Vector  &internal_force,
+                                        const double   load_factor,
+                                        const Supports supports) const
   {
     // The load's part: element_forces() of a zero displacement, -p.
     Vector residual(owned_dofs, mpi_communicator);
     element_forces(make_ghosted_vector(), load_factor, hanging_node_constraints, residual);
     residual += internal_force;
-    return sum_at_fixed_dofs(residual);
+    return sum_at_fixed_dofs(residual, supports);
   }
 
 
 
   template <int dim>
   Tensor<1, dim>
-  ElasticBody<dim>::sum_at_fixed_dofs(const Vector &residual) const
+  ElasticBody<dim>::sum_at_fixed_dofs(const Vector  &residual,
+                                      const Supports supports) const
   {
     // Only the dofs held by a fixed boundary carry a support reaction.
     Tensor<1, dim> reaction_here;
     for (unsigned int c = 0; c < dim; ++c)
       for (const auto g : component_dofs[c])
-        if (is_fixed(g))
+        if (is_fixed(g) &&
+            (supports == Supports::all || prescribed_dofs.is_element(g)))
           reaction_here[c] += residual[g];
     return Utilities::MPI::sum(reaction_here, mpi_communicator);
   }
@@ -100,19 +104,19 @@ namespace FrictionalContact
 
 
   template Tensor<1, 2>
-  ElasticBody<2>::support_reaction(const Vector &, const double) const;
+  ElasticBody<2>::support_reaction(const Vector &, const double, const Supports) const;
   template Tensor<1, 2>
-  ElasticBody<2>::support_reaction_of(const Vector &, const double) const;
+  ElasticBody<2>::support_reaction_of(const Vector &, const double, const Supports) const;
   template Tensor<1, 2>
-  ElasticBody<2>::sum_at_fixed_dofs(const Vector &) const;
+  ElasticBody<2>::sum_at_fixed_dofs(const Vector &, const Supports) const;
   template void
   ElasticBody<2>::prescribed_increment(const double, const double, Vector &) const;
   template Tensor<1, 3>
-  ElasticBody<3>::support_reaction(const Vector &, const double) const;
+  ElasticBody<3>::support_reaction(const Vector &, const double, const Supports) const;
   template Tensor<1, 3>
-  ElasticBody<3>::support_reaction_of(const Vector &, const double) const;
+  ElasticBody<3>::support_reaction_of(const Vector &, const double, const Supports) const;
   template Tensor<1, 3>
-  ElasticBody<3>::sum_at_fixed_dofs(const Vector &) const;
+  ElasticBody<3>::sum_at_fixed_dofs(const Vector &, const Supports) const;
   template void
   ElasticBody<3>::prescribed_increment(const double, const double, Vector &) const;
 } // namespace FrictionalContact

@@ -41,7 +41,10 @@ namespace FrictionalContact
       "Poisson's ratio exceeds 0.45 (in 3D and plane strain; plane stress "
       "does not lock) or the law flows plastically (plastic flow keeps the "
       "volume, and the standard element locks where it flows), and the "
-      "standard element otherwise.");
+      "standard element otherwise. At finite strain B-bar is refused and "
+      "'auto' gives J2 plasticity the cell's mean volume ratio for its "
+      "pressure (the mean-dilatation element) and the elastic laws the "
+      "standard element.");
     prm.declare_entry(
       "Kinematics",
       "small strain",
@@ -53,9 +56,11 @@ namespace FrictionalContact
       "tangent has its geometric part; tractions and pressures stay dead "
       "loads per reference area). 'neo-Hookean' and 'nearly incompressible "
       "neo-Hookean' need finite strain; 'linear elastic' at finite strain "
-      "is the St. Venant-Kirchhoff law; finite strain takes the standard "
-      "element (the nearly incompressible law averages the volume ratio "
-      "over each cell itself).");
+      "is the St. Venant-Kirchhoff law; 'J2 plasticity' at finite strain "
+      "is F = Fe Fp with the Hencky law and the exponential map (isotropic "
+      "hardening only). The elastic laws take the standard element at "
+      "finite strain (the nearly incompressible law averages the volume "
+      "ratio over each cell itself).");
     prm.declare_entry(
       "Quadrature",
       "Gauss",

@@ -328,13 +328,14 @@ namespace FrictionalContact
   template <int dim>
   Tensor<1, dim>
   Model<dim>::support_reaction(const TrilinosWrappers::MPI::Vector &u_ghosted,
-                               const double                         load_factor) const
+                               const double                         load_factor,
+                               const Supports                       supports) const
   {
     if (!nonlinear())
-      return body->support_reaction(u_ghosted, load_factor);
+      return body->support_reaction(u_ghosted, load_factor, supports);
     TrilinosWrappers::MPI::Vector force = body->make_vector();
     response->internal_force(u_ghosted, body->get_hanging_node_constraints(), force, nullptr);
-    return body->support_reaction_of(force, load_factor);
+    return body->support_reaction_of(force, load_factor, supports);
   }
 
 

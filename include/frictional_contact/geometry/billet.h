@@ -12,8 +12,9 @@ namespace FrictionalContact
      * the quarter x, y >= 0 (two symmetry planes); in 2D the half section
      * [0, R] x [0, H] of a plane-strain strip (x = 0 a symmetry plane).
      * The bottom face is where a die or a mid-plane symmetry holds it, the
-     * top face meets the die. Owns the manifolds that keep the side round
-     * under refinement. Boundaries: bottom, top, side, x symmetry,
+     * top face meets the die. With a neck imperfection the radius grows
+     * from the bottom face to the top: a bar for a tensile test. Owns the
+     * manifolds that keep the side round (and tapered) under refinement. Boundaries: bottom, top, side, x symmetry,
      * y symmetry (3D quarter).
      */
     template <int dim>
@@ -40,6 +41,8 @@ namespace FrictionalContact
       unsigned int height_cells = 2;
       /// 3D: whether only the quarter x, y >= 0 is meshed.
       bool         quarter = true;
+      /// The radius's relative reduction at the bottom face (a neck's seed).
+      double       imperfection = 0;
     };
   } // namespace Geometry
 } // namespace FrictionalContact

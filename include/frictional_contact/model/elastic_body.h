@@ -23,6 +23,13 @@
 
 namespace FrictionalContact
 {
+  /// Which supports a reaction sums: all fixed and prescribed boundaries,
+  /// or only the prescribed ones (the force that moves them).
+  enum class Supports
+  {
+    all,
+    prescribed
+  };
   /**
    * The discretised elastic body: Q1 displacement field on a distributed
    * mesh (the standard or the B-bar element, as the material says), its
@@ -97,13 +104,24 @@ namespace FrictionalContact
      * constrained dofs, summed per component.
      */
     Tensor<1, dim>
-    support_reaction(const Vector &u, const double load_factor) const;
+    support_reaction(const Vector &u,
+                     const double  load_factor,
+                     const Supports supports = Supports::all) const;
 
     /// The same for bodies of nonlinear laws, from their internal force
     /// @p internal_force (distributed with the hanging-node constraints
     /// only). Collective.
     Tensor<1, dim>
-    support_reaction_of(const Vector &internal_force, const double load_factor) const;
+    support_reaction_of(const Vector  &internal_force,
+                        const double   load_factor,
+                        const Supports supports = Supports::all) const;
+
+    /// Whether a boundary of the body is prescribed (moved, not fixed).
+    bool
+    has_prescribed_boundaries() const
+    {
+      return !conditions.prescribed_boundaries.empty();
+    }
 
     /// The assembled K, to be replaced by the tangent of nonlinear laws
     /// (BodyResponse::internal_force()) in place: what refers to K sees the
@@ -261,9 +279,10 @@ namespace FrictionalContact
     }
 
   private:
-    /// The components of @p residual summed over the fixed dofs.
+    /// The components of @p residual summed over the fixed dofs (or
+    /// only the prescribed ones).
     Tensor<1, dim>
-    sum_at_fixed_dofs(const Vector &residual) const;
+    sum_at_fixed_dofs(const Vector &residual, const Supports supports) const;
 
     /**
      * force = sum over the locally owned cells of K_e u_e - load_factor p_e,

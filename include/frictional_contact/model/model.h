@@ -118,7 +118,8 @@ namespace FrictionalContact
     /// they are not linear). Collective.
     Tensor<1, dim>
     support_reaction(const TrilinosWrappers::MPI::Vector &u_ghosted,
-                     const double                         load_factor) const;
+                     const double                         load_factor,
+                     const Supports supports = Supports::all) const;
 
     /// The bodies (material ids) that only contact holds against rigid-body
     /// motion: K is singular on them (after assemble()).
