@@ -215,8 +215,22 @@ def finite_strain_goal(root):
     return ", ".join(ratios)
 
 
+def forming_goal(root):
+    """step-42's finite over small strain per increment in bench/forming.py's
+    rows (as shipped and a fifth as deep), for the goals' table."""
+    per_part = {}
+    for r in rows(root, "forming.csv"):
+        if r["part"].startswith("step42"):
+            per_part.setdefault(r["part"], {})[r["variant"]] = \
+                float(r["increment_in_elastic_solves"])
+    ratios = [f"{part} {v['finite strain'] / v['small strain']:.2f}"
+              for part, v in per_part.items() if len(v) == 2]
+    return ", ".join(ratios) if ratios else "(bench/forming.py has not run)"
+
+
 QUOTES = {
     "process-start": process_start,
+    "forming-goal": forming_goal,
     "finite-strain-block": finite_strain_block,
     "finite-strain-goal": finite_strain_goal,
     "ironing-fold": ironing_fold,
