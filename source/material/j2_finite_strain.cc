@@ -60,9 +60,13 @@ namespace FrictionalContact
       // The trial elastic left Cauchy-Green tensor b_e = F Cp^-1 F^T, its
       // logarithmic strain ln(b_e) / 2 and the radial return of its
       // deviator's Kirchhoff stress.
+      // A point that never flowed has Cp = I: its trial b_e is C, whose
+      // decomposition is at hand.
       const double                 alpha_before = history[6];
-      const Symmetric3             trial_b = congruence(U, I + read_history_tensor(history));
-      const SpectralDecomposition  elastic_left(trial_b);
+      const Symmetric3             plastic_history = read_history_tensor(history);
+      const SpectralDecomposition  elastic_left =
+        plastic_history.norm() == 0. ? right :
+                                       SpectralDecomposition(congruence(U, I + plastic_history));
       const Symmetric3             trial_strain =
         elastic_left.map([](const double x) { return 0.5 * std::log(x); });
       const Symmetric3   trial = 2. * mu * deviator(trial_strain);
@@ -107,32 +111,42 @@ namespace FrictionalContact
       // eigenbasis of b_e: d_ab (b_a + b_b) ln[b_a, b_b] / 2), tau by the
       // consistent tangent on it plus p dJ I = J p tr(d) I; the Lie
       // derivative of tau is that minus d tau + tau d, and dS = F^-1 L(tau)
-      // F^-T.
+      // F^-T. All of it in the eigenbasis Q of b_e, where tau and n are
+      // diagonal (isotropic functions of b_e): with W = U^-1 Q, d has the
+      // components W^T H W there and dS = W L W^T.
       double factor[3][3];
       for (unsigned int a = 0; a < 3; ++a)
         for (unsigned int b = 0; b < 3; ++b)
           factor[a][b] = 0.5 * logarithm_factor(elastic_left.values[a], elastic_left.values[b]);
-      const Tensor<2, 3> tau_matrix(tau);
+      const Tensor<2, 3> W           = Tensor<2, 3>(U_inv) * elastic_left.vectors;
+      const Symmetric3   tau_in_eigenbasis = elastic_left.to_eigenbasis(tau);
+      const Symmetric3   n_in_eigenbasis   = elastic_left.to_eigenbasis(flow.n);
       for (unsigned int k = 0; k < dim; ++k)
         for (unsigned int l = k; l < dim; ++l)
           {
-            Symmetric3 H;
-            H[k][l] = k == l ? 1. : 0.5;
-            const Symmetric3 d = congruence(U_inv, H);
-            Symmetric3       strain_change = elastic_left.to_eigenbasis(d);
+            // d = W^T H W for H = (e_k (x) e_l + e_l (x) e_k) / 2.
+            Tensor<2, 3> d;
             for (unsigned int a = 0; a < 3; ++a)
-              for (unsigned int b = a; b < 3; ++b)
-                strain_change[a][b] *= factor[a][b];
-            strain_change = elastic_left.from_eigenbasis(strain_change);
-            const Symmetric3 deviator_change = deviator(strain_change);
-            const Symmetric3 tau_change =
-              2. * flow.shear * deviator_change +
-              flow.flow * (flow.n * deviator_change) * flow.n +
-              J * pressure * trace(d) * I;
-            const Tensor<2, 3> d_matrix(d);
-            const Symmetric3   lie_derivative =
-              tau_change - symmetrize(d_matrix * tau_matrix + tau_matrix * d_matrix);
-            const Symmetric3 S_change = congruence(U_inv, lie_derivative);
+              for (unsigned int b = 0; b < 3; ++b)
+                d[a][b] = 0.5 * (W[k][a] * W[l][b] + W[l][a] * W[k][b]);
+            Tensor<2, 3> strain_change;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                strain_change[a][b] = factor[a][b] * d[a][b];
+            const double volume_change = trace(strain_change) / 3.;
+            double       flow_part     = 0;
+            for (unsigned int a = 0; a < 3; ++a)
+              flow_part += n_in_eigenbasis[a][a] * (strain_change[a][a] - volume_change);
+            flow_part *= flow.flow;
+            const double pressure_part = J * pressure * trace(d);
+            Tensor<2, 3> lie_derivative;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                lie_derivative[a][b] =
+                  2. * flow.shear * (strain_change[a][b] - (a == b ? volume_change : 0.)) +
+                  (a == b ? flow_part * n_in_eigenbasis[a][a] + pressure_part : 0.) -
+                  d[a][b] * (tau_in_eigenbasis[a][a] + tau_in_eigenbasis[b][b]);
+            const Tensor<2, 3> S_change = W * lie_derivative * transpose(W);
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 {

@@ -34,11 +34,17 @@ namespace FrictionalContact
   SymmetricTensor<2, 3>
   SpectralDecomposition::from_eigenbasis_diagonal(const std::array<double, 3> &d) const
   {
-    SymmetricTensor<2, 3> result;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = i; j < 3; ++j)
+    // By the raw entries (00, 11, 22, 01, 02, 12): the accessors of
+    // result[i][j] cost more than the sum.
+    static constexpr unsigned int row[6] = {0, 1, 2, 0, 0, 1}, column[6] = {0, 1, 2, 1, 2, 2};
+    SymmetricTensor<2, 3>         result;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        double sum = 0;
         for (unsigned int a = 0; a < 3; ++a)
-          result[i][j] += d[a] * vectors[i][a] * vectors[j][a];
+          sum += d[a] * vectors[row[k]][a] * vectors[column[k]][a];
+        result.access_raw_entry(k) = sum;
+      }
     return result;
   }
 
