@@ -13,8 +13,8 @@ namespace FrictionalContact
    * A symmetric positive definite 3 x 3 tensor X = sum_a x_a v_a (x) v_a by
    * its eigenvalues x_a and orthonormal eigenvectors v_a (deal.II's QL
    * method with implicit shifts), for the isotropic tensor functions of
-   * finite-strain plasticity: f(X) = sum_a f(x_a) v_a (x) v_a, and the components of a tensor in the
-   * eigenbasis and back. Repeated eigenvalues need no care: any orthonormal
+   * finite-strain plasticity: f(X) = sum_a f(x_a) v_a (x) v_a, and the
+   * components of a tensor in the eigenbasis and back. Repeated eigenvalues need no care: any orthonormal
    * basis of their eigenspace serves f(X) and the derivative of f (the
    * Daleckii-Krein formula in this basis).
    */
