@@ -35,6 +35,7 @@ SCENE_POINTS = {
     "ironing_2d": "ironing: a rigid die pressed into a neo-Hookean block and slid along it with friction (finite strain)",
     "o_ring_2d": "an O-ring squeezed by 25 % between two plates (neo-Hookean, finite strain, plane strain)",
     "billet_upsetting": "forming: a quarter of an aluminium billet (J2 with Voce hardening, finite strain) upset by 50 % between plane dies with friction 0.1: it barrels",
+    "strip_drawing_2d": "forming: an elasto-plastic strip (finite-strain J2) drawn under a rigid die that takes a fifth off its thickness, with friction 0.1: large sliding, the strip leaves thinner",
     "billet_upsetting_sticking": "the billet upset by 25 % with friction 1: the faces stick, the side folds over onto the die",
 }
 

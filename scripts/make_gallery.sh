@@ -2,7 +2,8 @@
 # Renders every shipped scene (parameters/*.prm) to doc/figures/<scene>.png:
 # runs each scene with the built program in a scratch folder, then
 # scripts/render_contact.py on a virtual display (the time with the most
-# contact; ironing_2d and the billets at their last), and for 2D scenes scripts/plot_contact_profile.py
+# contact; ironing_2d, strip_drawing_2d and the billets at their last),
+# and for 2D scenes scripts/plot_contact_profile.py
 # (doc/figures/<scene>-profile.png). A
 # ParaView state of each run (contact.pvsm) is saved in its output folder,
 # next to the data it names: open it in the GUI (File > Load State).
@@ -16,7 +17,7 @@ out=$root/doc/figures
 scenes=()
 while [ $# -gt 0 ]; do
   case $1 in
-    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --build) build=$(cd "$2" && pwd); shift 2 ;;
     --out) mkdir -p "$2"; out=$(cd "$2" && pwd); shift 2 ;;
     *) scenes+=("$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"); shift ;;
@@ -47,7 +48,7 @@ for scene in "${scenes[@]}"; do
   # A scene whose point is where its load ends (the die at the end of its
   # path) is drawn at its last time; the others at the most contact.
   times=contact
-  case $name in ironing_2d|billet_upsetting*) times=last ;; esac
+  case $name in ironing_2d|strip_drawing_2d|billet_upsetting*) times=last ;; esac
   "$root/scripts/headless.sh" pvbatch --no-mpi "$root/scripts/render_contact.py" "$directory" \
     --out "$out" --name "$name" --times $times --state "$directory/contact.pvsm" 2>&1 | grep '^wrote' || {
       echo "rendering $name failed" >&2; exit 1; }
