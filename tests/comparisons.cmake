@@ -93,14 +93,14 @@ contact_compare_tables(frictionless_two_increments.path_independent
   --keys x --columns ux,uy,rn --tolerance 1e-8 --states state)
 
 # A test run by its script tests/<script>.sh, which takes the program, the
-# source folder and Python, in a folder of its own; <processors> are the
-# ranks it starts.
+# source folder and Python (and the arguments after <processors>), in a
+# folder of its own; <processors> are the ranks it starts.
 function(add_script_test name script processors)
-  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${script})
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${name})
   add_test(NAME ${name}
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/${script}.sh $<TARGET_FILE:contact>
-            ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE}
-    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${script})
+            ${PROJECT_SOURCE_DIR} ${PYTHON3_EXECUTABLE} ${ARGN}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${name})
   set_tests_properties(${name} PROPERTIES ENVIRONMENT "${_environment}"
     PROCESSORS ${processors})
 endfunction()
@@ -606,8 +606,10 @@ endforeach()
 
 # A plastic history through a kill and a resume on another rank count, the
 # mesh adapted in every increment: the same residual impression and plastic
-# strains as the uninterrupted run (restart_plastic.sh).
+# strains as the uninterrupted run (restart_plastic.sh); also at finite
+# strain, whose history (Cp^-1, alpha) has another size.
 add_script_test(restart_plastic restart_plastic 2)
+add_script_test(restart_plastic_finite_strain restart_plastic 2 "finite strain")
 
 # The uniaxial cube on a mesh adapted in every increment (hanging vertices
 # on the moved top face, the history carried to the children): still the
