@@ -321,13 +321,13 @@ def forming(part):
             row = [r["level"]] if part == "billet" else []
             row += [r["variant"], r["ranks"], thousands(r["d"]), r["increments"],
                     r["newton_iterations"], r["cuts"], f"{float(r['force']):.5g}",
-                    r["increment_in_elastic_solves"]]
+                    r["increment_in_elastic_solves"], r.get("peak_mb") or ""]
             if part.startswith("step42"):
                 row.append(f"{unit[r['variant']] / unit['small strain']:.2f}")
             body.append(row)
         header = (["refinements"] if part == "billet" else []) + \
             ["variant", "ranks", "d", "increments", "Newton steps", "cuts", "die force",
-             "increment in elastic solves"] + (["/ small strain"] if part.startswith("step42") else [])
+             "increment in elastic solves", "peak MB per rank"] + (["/ small strain"] if part.startswith("step42") else [])
         return markdown(header, body)
     return table
 

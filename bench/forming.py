@@ -22,11 +22,15 @@ mesh alternately. Rewrites doc/benchmarks/forming.csv (the rows of the
 same part, mesh and variant) and the tables of doc/performance.md
 ("Forming").
 
+The peak memory per rank (the largest) is recorded with each run.
+
 usage: bench/forming.py [--program build/contact] [--ranks 2] [--repeat 1]
                         [--levels 0,1,2,3] [--parts billet,step42]
+                        [--variants "mean volume ratio"]
 """
 import argparse
 import os
+import re
 import subprocess
 import sys
 
@@ -41,7 +45,7 @@ from runs import (NO_OUTPUT, best_alternately, chosen_scenes, increment_statisti
 
 COLUMNS = ["part", "level", "variant", "ranks", "d", "increments", "newton_iterations",
            "cuts", "force", "solve_s", "elastic_solve_s", "increment_in_elastic_solves",
-           "commit"]
+           "peak_mb", "commit"]
 CSV = os.path.join(ROOT, "doc", "benchmarks", "forming.csv")
 
 # One elastic solve of a scene's mesh: linear elastic at small strain, no
@@ -107,6 +111,7 @@ def run(program, scene, more, ranks, folder, column):
     rows = read_statistics(os.path.join(folder, "output", "statistics"))
     result["force"] = abs(rows[-1][column]) if rows else float("nan")
     result["cuts"] = output.count("Cut in half")
+    result["peak_mb"] = float(re.findall(r"peak memory = ([0-9.]+) MB", output)[-1])
     return result
 
 
@@ -119,6 +124,8 @@ def main():
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--levels", default="0,1,2,3")
     parser.add_argument("--parts", default=",".join(PARTS))
+    parser.add_argument("--variants", help="only these variants (and the elastic "
+                        "solve), separated by ','")
     args = parser.parse_args()
     program = os.path.abspath(args.program)
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
@@ -126,6 +133,9 @@ def main():
     rows = []
     for part in chosen_scenes(parser, args.parts, list(PARTS)):
         scene, column, variants = PARTS[part]
+        if args.variants:
+            variants = {name: text for name, text in variants.items()
+                        if name in args.variants.split(",") + ["elastic solve"]}
         levels = [int(x) for x in args.levels.split(",")] if part == "billet" else [None]
         for level in levels:
             refined = "" if level is None else \
@@ -142,7 +152,7 @@ def main():
                            force=f"{result['force']:.6g}", solve_s=f"{result['solve_s']:.3f}",
                            elastic_solve_s=f"{unit:.4f}",
                            increment_in_elastic_solves=f"{per_increment / unit:.2f}",
-                           commit=commit)
+                           peak_mb=f"{result['peak_mb']:.0f}", commit=commit)
                 rows.append(row)
                 print_row(row, COLUMNS)
     replace_runs(CSV, COLUMNS, rows,
