@@ -12,7 +12,8 @@ usage: check_analytic.py hertz OUTPUT_DIR [--radius-tolerance 0.05]
 
 hertz: contact radius (3D) or half-width (2D) and peak pressure against
   Hertz's formulas for the measured total normal force P, relative errors
-  within the tolerances. The contact radius is that of the area of the
+  within the tolerances (an axisymmetric section of a ball: the 3D
+  formulas). The contact radius is that of the area of the
   nodes in contact (sum of their lumped areas, all symmetric copies: a =
   sqrt(A / pi), or A / 2 in 2D); the peak pressure is the largest nodal
   pressure (normal reaction over lumped area). With --profile-tolerance,
@@ -81,6 +82,10 @@ class Scene:
         p = read_parameters(directory + "/parameters.prm")
         self.rows = read_statistics(directory + "/statistics")
         self.dim = int(p.get("Dimension", "2"))
+        # An axisymmetric section of a ball (x = r): Hertz's 3D formulas,
+        # its forces and areas already those of the whole ball.
+        self.axisymmetric = self.dim == 2 and p.get(
+            "Material/Two-dimensional model", "").strip() == "axisymmetric"
         # One body on a rigid plane (half ball), or a ball on an elastic
         # plate: 1/E* = sum over the bodies of (1 - nu^2) / E (plane
         # strain and 3D; E in plane stress).
@@ -108,8 +113,11 @@ class Scene:
         self.center = [0.0] * 3 if two_bodies else \
             [float(c) for c in p.get(geometry + "Center", "0, 0, 0").split(",")]
         self.planes = int(p.get(geometry + "Symmetry planes", "0"))
-        self.copies = 2 ** self.planes
+        self.copies = 1 if self.axisymmetric else 2 ** self.planes
         self.directory = directory
+
+    def label(self):
+        return "axisymmetric" if self.axisymmetric else f"{self.dim}D"
 
     def normal_force(self, row):
         # The force on the slave side: on the ball, upwards; on the plate
@@ -125,7 +133,8 @@ class Scene:
 
     def radius_of_area(self, area):
         area *= self.copies
-        return area / 2 if self.dim == 2 else math.sqrt(area / math.pi)
+        return area / 2 if self.dim == 2 and not self.axisymmetric else \
+            math.sqrt(area / math.pi)
 
     def element_size(self):
         """Median distance from a node in contact to its nearest neighbour."""
@@ -151,7 +160,7 @@ def hertz(scene):
     P, R, E = scene.normal_force(row), scene.radius, scene.E_star
     a = scene.radius_of_area(row["Contact area"])
     p0 = row["Max contact pressure"]
-    if scene.dim == 2:
+    if scene.dim == 2 and not scene.axisymmetric:
         a_hertz = math.sqrt(4 * P * R / (math.pi * E))
         p_hertz = 2 * P / (math.pi * a_hertz)
     else:
@@ -193,12 +202,12 @@ def check_hertz(scene, args):
         error_profile, count = pressure_profile_error(scene, a_hertz, p_hertz)
         passed = count > 0 and error_profile <= args.profile_tolerance
         ok = ok and passed
-        print(f"Hertz {scene.dim}D: nodal pressures within 0.8 a ({count} "
+        print(f"Hertz {scene.label()}: nodal pressures within 0.8 a ({count} "
               f"nodes) differ from Hertz's profile by at most "
               f"{100 * error_profile:.2f} % of p0 (allowed "
               f"{100 * args.profile_tolerance:g} %)")
-    name = "half-width" if scene.dim == 2 else "radius"
-    print(f"Hertz {scene.dim}D: P = {P:.6g}, contact {name} {a:.6g} against "
+    name = "half-width" if scene.dim == 2 and not scene.axisymmetric else "radius"
+    print(f"Hertz {scene.label()}: P = {P:.6g}, contact {name} {a:.6g} against "
           f"{a_hertz:.6g} (error {100 * error_a:.2f} %, allowed "
           f"{100 * args.radius_tolerance:g} %), peak pressure {p0:.6g} against "
           f"{p_hertz:.6g} (error {100 * error_p:.2f} %, allowed "

@@ -13,6 +13,9 @@ max |u_r,exact|. Radial and hoop stress at every cell centre:
 Tube (plane strain), radii a < b:
   u_r = p a^2 (1 + nu) / (E (b^2 - a^2)) ((1 - 2 nu) r + b^2 / r)
   sigma_r = p a^2 / (b^2 - a^2) (1 - b^2 / r^2), sigma_t with 1 + b^2 / r^2
+An axisymmetric run (Material/Two-dimensional model = axisymmetric: the
+section x = r >= 0 of the sphere) is held to the sphere's solution, and
+its circumferential stress (the stt column) to the hoop stress as well.
 Sphere:
   u_r = p a^3 / (E (b^3 - a^3)) ((1 - 2 nu) r + (1 + nu) b^3 / (2 r^2))
   sigma_r = p a^3 / (b^3 - a^3) (1 - b^3 / r^3),
@@ -44,6 +47,7 @@ def main():
     args = parser.parse_args()
     prm = read_parameters(args.directory + "/parameters.prm")
     dim = int(prm["Dimension"])
+    axisymmetric = prm.get("Material/Two-dimensional model") == "axisymmetric"
     E = float(prm["Material/Young's modulus"])
     nu = float(prm["Material/Poisson's ratio"])
     a = float(prm["Geometry/Shell/Inner radius"])
@@ -57,7 +61,7 @@ def main():
         x = [float(row[c]) - center[i] for i, c in enumerate(axes)]
         return x, math.sqrt(sum(c * c for c in x))
 
-    if dim == 2:
+    if dim == 2 and not axisymmetric:
         k = p * a * a / (b * b - a * a)
         u_exact = lambda r: k * (1 + nu) / E * ((1 - 2 * nu) * r + b * b / r)
         s_r = lambda r: k * (1 - b * b / r ** 2)
@@ -90,6 +94,8 @@ def main():
         hoop = (sum(sigma[i][i] for i in range(dim)) - radial) / (dim - 1)
         worst_r = max(worst_r, abs(radial - s_r(r)))
         worst_t = max(worst_t, abs(hoop - s_t(r)))
+        if axisymmetric:
+            worst_t = max(worst_t, abs(float(row["stt"]) - s_t(r)))
 
     errors = {"radial displacement": worst_u / scale_u,
               "radial stress": worst_r / p, "hoop stress": worst_t / p}
@@ -97,7 +103,7 @@ def main():
     for name, error in errors.items():
         passed = error <= args.tolerance
         ok = ok and passed
-        print(f"Lame {dim}D, nu = {nu:g}: {name} error {100 * error:.3f} % "
+        print(f"Lame {'axisymmetric' if axisymmetric else f'{dim}D'}, nu = {nu:g}: {name} error {100 * error:.3f} % "
               f"(allowed {100 * args.tolerance:g} %): {'ok' if passed else 'TOO LARGE'}")
     print("PASSED" if ok else "FAILED")
     return 0 if ok else 1

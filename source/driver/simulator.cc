@@ -385,8 +385,11 @@ namespace FrictionalContact
     state.u += outcome.du;
     model.commit(state.u);
 
-    ContactSummary<dim> summary = summarize(
-      contact, outcome.results, state.contact_forces, mpi_communicator);
+    ContactSummary<dim> summary = summarize(contact,
+                                            outcome.results,
+                                            state.contact_forces,
+                                            model.get_materials().axisymmetric(),
+                                            mpi_communicator);
     if (contact.active())
       {
         TrilinosWrappers::MPI::Vector u_ghosted =

@@ -26,10 +26,14 @@ namespace FrictionalContact
   template <int dim>
   BodyResponse<dim>::CellScratch::CellScratch(const FiniteElement<dim> &fe)
     : gauss(2)
-    , gauss_values(fe.base_element(0), gauss, update_gradients | update_JxW_values)
+    , gauss_values(fe.base_element(0),
+                   gauss,
+                   update_values | update_gradients | update_quadrature_points |
+                     update_JxW_values)
     , lobatto_values(fe.base_element(0),
                      QGaussLobatto<dim>(3),
-                     update_gradients | update_JxW_values)
+                     update_values | update_gradients | update_quadrature_points |
+                       update_JxW_values)
     , dof(GeometryInfo<dim>::vertices_per_cell)
     , u(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
@@ -38,6 +42,10 @@ namespace FrictionalContact
     , mean_divergence(fe.n_dofs_per_cell())
     , responses(lobatto_values.n_quadrature_points)
     , strain(lobatto_values.n_quadrature_points)
+    , radius(lobatto_values.n_quadrature_points)
+    , values(lobatto_values.n_quadrature_points * GeometryInfo<dim>::vertices_per_cell)
+    , revolved_deformation(lobatto_values.n_quadrature_points)
+    , revolved_responses(lobatto_values.n_quadrature_points)
     , deformation_gradient(lobatto_values.n_quadrature_points)
     , jacobian(lobatto_values.n_quadrature_points, 1.)
     , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
@@ -72,6 +80,9 @@ namespace FrictionalContact
     CellScratch                                          &scratch,
     double                                               *new_history) const
   {
+    if constexpr (dim == 2)
+      if (materials.axisymmetric())
+        return evaluate_revolved_cell(cell, u_ghosted, with_tangent, scratch, new_history);
     const unsigned int        n_vertices = scratch.dof.size();
     const MaterialModel<dim> &law        = materials.of(cell->material_id());
     scratch.corner_points                = law.elastic().corner_points;
@@ -139,21 +150,7 @@ namespace FrictionalContact
         mean_volume_ratio += scratch.jacobian[q] * JxW;
       }
     if (scratch.finite_strain && !scratch.corner_points)
-      {
-        // A cell folded at a corner can have det F > 0 at its Gauss points
-        // (the Gauss-Lobatto points include the corners).
-        std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell>     vertices;
-        std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> displacement;
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          {
-            vertices[a] = cell->vertex(a);
-            for (unsigned int c = 0; c < dim; ++c)
-              displacement[a][c] = scratch.u(scratch.dof[a][c]);
-          }
-        const double jacobian = smallest_corner_jacobian<dim>(vertices, displacement);
-        if (jacobian < scratch.smallest_jacobian.value)
-          scratch.smallest_jacobian.keep(jacobian, cell->center());
-      }
+      keep_corner_jacobian(cell, scratch);
     for (double &d : scratch.mean_divergence)
       d /= volume;
     mean_dilatation /= volume;
@@ -178,6 +175,29 @@ namespace FrictionalContact
                    with_tangent,
                    scratch.responses[q],
                    new_history == nullptr ? nullptr : new_history + q * n_history);
+  }
+
+
+
+  template <int dim>
+  void
+  BodyResponse<dim>::keep_corner_jacobian(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    CellScratch                                          &scratch) const
+  {
+    // A cell folded at a corner can have det F > 0 at its Gauss points
+    // (the Gauss-Lobatto points include the corners).
+    std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell>     vertices;
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> displacement;
+    for (unsigned int a = 0; a < scratch.dof.size(); ++a)
+      {
+        vertices[a] = cell->vertex(a);
+        for (unsigned int c = 0; c < dim; ++c)
+          displacement[a][c] = scratch.u(scratch.dof[a][c]);
+      }
+    const double jacobian = smallest_corner_jacobian<dim>(vertices, displacement);
+    if (jacobian < scratch.smallest_jacobian.value)
+      scratch.smallest_jacobian.keep(jacobian, cell->center());
   }
 
 
@@ -344,7 +364,9 @@ namespace FrictionalContact
     // The positions serve the matrix of this mesh once update_tangent()
     // has taken them (internal_force() adds by them before that).
     positions = CellMatrixPositions<dim>();
-    if (materials.all_linear())
+    // An axisymmetric cell takes its points' radii and values from its
+    // FEValues each time.
+    if (materials.all_linear() || materials.axisymmetric())
       return;
     CellScratch &scratch = fresh_scratch();
     reference.reinit(body.get_dof_handler(),
@@ -372,8 +394,8 @@ namespace FrictionalContact
       if (cell->is_locally_owned())
         if (double *values = history.values(cell))
           {
-            const unsigned int n = scratch.gauss.size() *
-                                   materials.of(cell->material_id()).n_history_values();
+            const unsigned int n =
+              scratch.gauss.size() * materials.history_size(cell->material_id());
             updated.resize(n);
             evaluate_cell(cell, u_ghosted, false, scratch, updated.data());
             std::copy(updated.begin(), updated.end(), values);
@@ -413,6 +435,12 @@ namespace FrictionalContact
           const MaterialModel<dim> &law       = materials.of(cell->material_id());
           const double             *committed = history.values(cell);
           CellState<dim>           &state     = states[cell->active_cell_index()];
+          if constexpr (dim == 2)
+            if (scratch.revolved)
+              {
+                revolved_cell_state(scratch, committed, cell->material_id(), state);
+                continue;
+              }
           // At finite strain the Cauchy stress sigma = F S F^T / J
           // (sigma_zz = S_zz / J in plane strain), averaged over the
           // deformed cell.

@@ -46,6 +46,9 @@ namespace FrictionalContact
                                             const bool   with_tangent,
                                             CellScratch &scratch) const
   {
+    if constexpr (dim == 2)
+      if (scratch.revolved)
+        return revolved_force_and_tangent(with_tangent, scratch);
     if (scratch.finite_strain)
       return finite_strain_force_and_tangent(with_tangent, scratch);
     // The shape function of dof (a, c) is N_a e_c: its symmetric gradient

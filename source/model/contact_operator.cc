@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <frictional_contact/model/axisymmetry.h>
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/base/placed_minimum.h>
 #include <frictional_contact/base/plugins.h>
@@ -173,7 +174,10 @@ namespace FrictionalContact
     const FiniteElement<dim> &fe = body.get_dof_handler().get_fe();
     FEFaceValues<dim>         face_values(fe,
                                   QGauss<dim - 1>(2),
-                                  update_values | update_JxW_values);
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    // An axisymmetric scene's areas are those of the surface of revolution.
+    const bool axisymmetric = body.get_materials().axisymmetric();
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
@@ -189,7 +193,10 @@ namespace FrictionalContact
                   double             integral = 0;
                   for (const unsigned int q :
                        face_values.quadrature_point_indices())
-                    integral += face_values.shape_value(i, q) * face_values.JxW(q);
+                    integral += face_values.shape_value(i, q) * face_values.JxW(q) *
+                                (axisymmetric ?
+                                   Axisymmetry::weight(face_values.quadrature_point(q)) :
+                                   1.);
                   if (integral > 0)
                     area[cell->vertex_dof_index(v, 0)] += integral;
                 }

@@ -8,6 +8,7 @@
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <frictional_contact/model/axisymmetry.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/solvers/matrix_free_stiffness.h>
 
@@ -80,6 +81,8 @@ namespace FrictionalContact
                                                  prescribed.components);
       }
     prescribed_dofs.compress();
+    if (materials.axisymmetric())
+      Axisymmetry::hold_axis(dof_handler, Axisymmetry::check_radii(dof_handler), constraints);
     constraints.close();
 
     for (unsigned int c = 0; c < dim; ++c)
@@ -129,10 +132,12 @@ namespace FrictionalContact
     , face_quadrature(2)
     , fe_values(fe,
                 quadrature,
-                update_values | update_gradients | update_JxW_values)
+                update_values | update_gradients | update_quadrature_points |
+                  update_JxW_values)
     , fe_face_values(fe,
                      face_quadrature,
-                     update_values | update_normal_vectors | update_JxW_values)
+                     update_values | update_normal_vectors | update_quadrature_points |
+                       update_JxW_values)
     , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
     , cell_load(fe.n_dofs_per_cell())
     , dof_indices(fe.n_dofs_per_cell())
@@ -143,9 +148,16 @@ namespace FrictionalContact
 
   template <int dim>
   void
-  ElasticBody<dim>::cell_stiffness(const ElasticConstants<dim> &material,
-                                   CellScratch                      &scratch) const
+  ElasticBody<dim>::cell_stiffness(const types::material_id id, CellScratch &scratch) const
   {
+    if constexpr (dim == 2)
+      if (materials.axisymmetric())
+        return Axisymmetry::cell_stiffness(materials.revolved(id).elastic(),
+                                           scratch.fe_values,
+                                           scratch.cell_matrix,
+                                           scratch.divergence_integral,
+                                           scratch.volume);
+    const ElasticConstants<dim> &material = materials.of(id).elastic();
     const FEValues<dim>             &fe_values     = scratch.fe_values;
     FullMatrix<double>              &cell_matrix   = scratch.cell_matrix;
     const FEValuesExtractors::Vector displacement(0);
@@ -202,14 +214,19 @@ namespace FrictionalContact
     const FEValuesExtractors::Vector displacement(0);
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
 
+    // An axisymmetric scene's loads are totals over the revolution.
+    const bool axisymmetric = materials.axisymmetric();
+    const auto weight       = [axisymmetric](const Point<dim> &point) {
+      return axisymmetric ? Axisymmetry::weight(point) : 1.;
+    };
     fe_values.reinit(cell);
     cell_load = 0;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        cell_load(i) +=
-          conditions.body_force * fe_values[displacement].value(i, q) * fe_values.JxW(q);
+        cell_load(i) += conditions.body_force * fe_values[displacement].value(i, q) *
+                        fe_values.JxW(q) * weight(fe_values.quadrature_point(q));
     if (with_matrix)
-      cell_stiffness(materials.of(cell->material_id()).elastic(), scratch);
+      cell_stiffness(cell->material_id(), scratch);
 
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())
@@ -227,9 +244,9 @@ namespace FrictionalContact
               if (p != conditions.pressures.end())
                 traction -= p->second * fe_face_values.normal_vector(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_load(i) += traction *
-                                fe_face_values[displacement].value(i, q) *
-                                fe_face_values.JxW(q);
+                cell_load(i) += traction * fe_face_values[displacement].value(i, q) *
+                                fe_face_values.JxW(q) *
+                                weight(fe_face_values.quadrature_point(q));
             }
         }
   }
@@ -281,6 +298,8 @@ namespace FrictionalContact
       }
     load.compress(VectorOperation::add);
     reference_total_load = Utilities::MPI::sum(total_here, mpi_communicator);
+    if (materials.axisymmetric())
+      reference_total_load = Axisymmetry::revolution_total(reference_total_load);
   }
 
 
@@ -361,33 +380,6 @@ namespace FrictionalContact
 
 
   template <int dim>
-  dealii::Vector<double>
-  ElasticBody<dim>::mean_volumetric_strain(const Vector &u_ghosted) const
-  {
-    QGauss<dim>            quadrature(2);
-    FEValues<dim>          fe_values(fe, quadrature, update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<double>    divergence(quadrature.size());
-    dealii::Vector<double> theta(dof_handler.get_triangulation().n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_divergences(u_ghosted, divergence);
-          double integral = 0, volume = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              integral += divergence[q] * fe_values.JxW(q);
-              volume += fe_values.JxW(q);
-            }
-          theta[cell->active_cell_index()] = integral / volume;
-        }
-    return theta;
-  }
-
-
-
-  template <int dim>
   double
   ElasticBody<dim>::largest_nodal_magnitude(const Vector &u) const
   {
@@ -450,8 +442,11 @@ namespace FrictionalContact
     // The fixed dofs of a body prevent its rigid motions iff the rigid-body
     // modes, restricted to them, are linearly independent: their Gram
     // matrix is then positive definite. Bodies share no vertex.
-    const std::vector<std::vector<double>> modes   = rigid_body_modes();
-    const unsigned int                     n_modes = modes.size();
+    std::vector<std::vector<double>> modes = rigid_body_modes();
+    // A body of revolution has one rigid motion: along its axis (y).
+    if (materials.axisymmetric())
+      modes = {modes[1]};
+    const unsigned int n_modes = modes.size();
     std::map<types::material_id, unsigned int> body_index;
     for (const auto &[name, id] : bodies)
       body_index.emplace(id, body_index.size());

@@ -1,6 +1,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <frictional_contact/model/axisymmetry.h>
 #include <frictional_contact/model/elastic_body.h>
 
 // The body's supports: the reactions they take and the displacements they
@@ -48,7 +49,8 @@ namespace FrictionalContact
         if (is_fixed(g) &&
             (supports == Supports::all || prescribed_dofs.is_element(g)))
           reaction_here[c] += residual[g];
-    return Utilities::MPI::sum(reaction_here, mpi_communicator);
+    const Tensor<1, dim> reaction = Utilities::MPI::sum(reaction_here, mpi_communicator);
+    return materials.axisymmetric() ? Axisymmetry::revolution_total(reaction) : reaction;
   }
 
 

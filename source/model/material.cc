@@ -27,9 +27,14 @@ namespace FrictionalContact
                       "plane strain",
                       Patterns::Anything(),
                       "How a 2D computation models the third direction: "
-                      "plane strain (a long body, the usual default) or "
-                      "plane stress (a thin plate, as in Kanno's example I). "
-                      "Ignored in 3D.");
+                      "plane strain (a long body, the usual default), "
+                      "plane stress (a thin plate, as in Kanno's example I) "
+                      "or axisymmetric (a body of revolution: x is the "
+                      "radius r >= 0, y the axis; the hoop strain u_r / r "
+                      "and the weight 2 pi r of every integral are added, "
+                      "forces are totals over the revolution, u_r = 0 on "
+                      "the axis; every body of the scene or none). Ignored "
+                      "in 3D, where axisymmetric is refused.");
     prm.declare_entry(
       "Formulation",
       "auto",
@@ -164,13 +169,14 @@ namespace FrictionalContact
     poissons_ratio                = entries.get_number("Poisson's ratio");
     const std::string model       = entries.get("Two-dimensional model");
     const std::string formulation = entries.get("Formulation");
-    if (model != "plane strain" && model != "plane stress")
+    if (model != "plane strain" && model != "plane stress" && model != "axisymmetric")
       Input::fail("Material/Two-dimensional model", model,
-                  "'plane strain' or 'plane stress' is expected");
+                  "'plane strain', 'plane stress' or 'axisymmetric' is expected");
     if (formulation != "auto" && formulation != "standard" && formulation != "B-bar")
       Input::fail("Material/Formulation", formulation,
                   "'auto', 'standard' or 'B-bar' is expected");
     plane_stress = dim == 2 && model == "plane stress";
+    axisymmetric = model == "axisymmetric";
     if (finite_strain && plane_stress)
       Input::fail(entries.path_of("Kinematics"), kinematics,
                   "finite strain is written for plane strain and 3D: set "
@@ -273,7 +279,7 @@ namespace FrictionalContact
     std::string text = "E = " + Input::to_text(youngs_modulus) +
                        ", nu = " + Input::to_text(poissons_ratio);
     if (dim == 2)
-      text += plane_stress ? ", plane stress" : ", plane strain";
+      text += plane_stress ? ", plane stress" : axisymmetric ? ", axisymmetric" : ", plane strain";
     if (mean_dilatation)
       text += ", B-bar element";
     if (finite_strain)
@@ -392,7 +398,37 @@ namespace FrictionalContact
                       "the law '" + law + "' of the body '" + name +
                         "' is a finite-strain law: set <Material/Kinematics> "
                         "= finite strain");
+        if constexpr (dim == 2)
+          if (materials[id]->elastic().axisymmetric)
+            {
+              // The 3D law of the same entries: its strain has the hoop
+              // component.
+              revolved_laws[id] = PluginRegistry<MaterialModel<3>>::create_unparsed(law);
+              revolved_laws[id]->parse_parameters(material, own);
+            }
       }
+    const std::string model = prm.get({"Material"}, "Two-dimensional model");
+    for (const auto &[id, law] : materials)
+      if (dim == 3 && law->elastic().axisymmetric)
+        Input::fail("Material/Two-dimensional model", model,
+                    "an axisymmetric scene is a 2D section of a body of "
+                    "revolution: set Dimension = 2, or take 'plane strain' "
+                    "(ignored in 3D)");
+    if (!revolved_laws.empty() && revolved_laws.size() != materials.size())
+      Input::fail("Material/Two-dimensional model", model,
+                  "'axisymmetric' for every body of the scene or for none "
+                  "(the axis and the weight 2 pi r belong to the whole scene)");
+  }
+
+
+
+  template <int dim>
+  const MaterialModel<3> &
+  Materials<dim>::revolved(const types::material_id id) const
+  {
+    const auto it = revolved_laws.find(id);
+    Assert(it != revolved_laws.end(), ExcMessage("not an axisymmetric body"));
+    return *it->second;
   }
 
 
@@ -453,7 +489,7 @@ namespace FrictionalContact
   {
     unsigned int n = 0;
     for (const auto &[id, material] : materials)
-      n = std::max(n, material->n_history_values());
+      n = std::max(n, history_size(id));
     return n;
   }
 

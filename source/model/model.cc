@@ -125,6 +125,17 @@ namespace FrictionalContact
     if (matrix_free && contact->has_pairs())
       throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
                        "contact pairs (<Contact/Pairs>) yet: set it to false");
+    if (materials->axisymmetric() && (matrix_free || wants_mesh_levels(prm)))
+      throw InputError("<Linear solver/Preconditioner> = geometric multigrid "
+                       "(and Matrix-free stiffness) does not serve axisymmetric "
+                       "bodies (<Material/Two-dimensional model> = axisymmetric) "
+                       "yet: set the preconditioner to auto or AMG");
+    if (materials->axisymmetric() && contact->has_pairs())
+      throw InputError("<Contact/Pairs> (contact between bodies, and rigid tools) "
+                       "does not serve axisymmetric scenes (<Material/Two-"
+                       "dimensional model> = axisymmetric) yet: press the body "
+                       "on an obstacle (<Contact/Obstacle>), or take plane strain "
+                       "or 3D");
   }
 
 
@@ -156,9 +167,10 @@ namespace FrictionalContact
     const bool automatic = prm.get("Preconditioner") == "auto" &&
                            !prm.get_bool("Matrix-free stiffness");
     prm.leave_subsection();
-    // B-bar bodies, contact pairs and nonlinear laws need the assembled K.
+    // B-bar bodies, contact pairs, nonlinear laws and axisymmetric bodies
+    // need the assembled K.
     if (!automatic || materials->any_mean_dilatation() || contact->has_pairs() ||
-        nonlinear())
+        nonlinear() || materials->axisymmetric())
       return false;
     const double n_cells = refinement->cells_after_global_refinement(
       *triangulation, geometry->n_built_in_refinements());

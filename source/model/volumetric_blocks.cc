@@ -67,6 +67,9 @@ namespace FrictionalContact
           any_penalty || penalty_modulus(materials.of(cell->material_id()).elastic()) > 0;
     any_penalty = Utilities::MPI::logical_or(any_penalty,
                                              stiffness.get_mpi_communicator());
+    // The split is written for the dim-dimensional bulk modulus: an
+    // axisymmetric body's volumetric strain has the hoop part too.
+    any_penalty = any_penalty && !materials.axisymmetric();
     if (!active())
       return;
     const MPI_Comm comm = stiffness.get_mpi_communicator();

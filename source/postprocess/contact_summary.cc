@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <frictional_contact/model/axisymmetry.h>
 #include <frictional_contact/postprocess/contact_summary.h>
 
 namespace FrictionalContact
@@ -9,6 +10,7 @@ namespace FrictionalContact
   summarize(const ContactOperator<dim>        &contact,
             const ContactResults<dim>         &results,
             const std::vector<Tensor<1, dim>> &contact_forces,
+            const bool                         axisymmetric,
             const MPI_Comm                     comm)
   {
     ContactSummary<dim> s;
@@ -36,7 +38,14 @@ namespace FrictionalContact
     s.force            = Utilities::MPI::sum(s.force, comm);
     s.external_force   = Utilities::MPI::sum(s.external_force, comm);
     s.normal_force     = Utilities::MPI::sum(s.normal_force, comm);
-    s.tangential_force = Utilities::MPI::sum(tangential_force, comm).norm();
+    tangential_force   = Utilities::MPI::sum(tangential_force, comm);
+    if (axisymmetric)
+      {
+        s.force          = Axisymmetry::revolution_total(s.force);
+        s.external_force = Axisymmetry::revolution_total(s.external_force);
+        tangential_force = Axisymmetry::revolution_total(tangential_force);
+      }
+    s.tangential_force = tangential_force.norm();
     s.contact_area     = Utilities::MPI::sum(s.contact_area, comm);
     s.stick_area       = Utilities::MPI::sum(s.stick_area, comm);
     s.max_pressure     = Utilities::MPI::max(s.max_pressure, comm);
@@ -47,10 +56,12 @@ namespace FrictionalContact
   summarize(const ContactOperator<2> &,
             const ContactResults<2> &,
             const std::vector<Tensor<1, 2>> &,
+            const bool,
             const MPI_Comm);
   template ContactSummary<3>
   summarize(const ContactOperator<3> &,
             const ContactResults<3> &,
             const std::vector<Tensor<1, 3>> &,
+            const bool,
             const MPI_Comm);
 } // namespace FrictionalContact

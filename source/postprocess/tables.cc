@@ -50,14 +50,15 @@ namespace FrictionalContact
                      const TrilinosWrappers::MPI::Vector &u,
                      std::string                         &header)
     {
-      const char *axis = "xyz";
+      // The third direction of an axisymmetric scene is the hoop one, t.
+      const char *axis = body.get_materials().axisymmetric() ? "xyt" : "xyz";
       header.clear();
       for (unsigned int d = 0; d < dim; ++d)
         header += std::string(d == 0 ? "" : ",") + axis[d];
       for (unsigned int i = 0; i < dim; ++i)
         header += std::string(",s") + axis[i] + axis[i];
       if (dim == 2)
-        header += ",szz";
+        header += std::string(",s") + axis[2] + axis[2];
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i + 1; j < dim; ++j)
           header += std::string(",s") + axis[i] + axis[j];

@@ -201,6 +201,20 @@ namespace FrictionalContact
       /// (MaterialModel::volume_ratio()).
       typename MaterialModel<dim>::VolumeRatio volume_ratio =
         MaterialModel<dim>::VolumeRatio::none;
+      /// Of a cell of an axisymmetric scene (evaluate_revolved_cell()):
+      /// whether the last cell was one, whether its law takes the B-bar
+      /// element, the radius r and the values N_a of the vertices'
+      /// functions at its points (N_a at point q: values[q * n_vertices
+      /// + a]), its 3D law's volume ratio, F with the hoop stretch (finite
+      /// strain) and the 3D law's responses. Its JxW carry 2 pi r.
+      bool                                      revolved = false;
+      bool                                      revolved_mean_dilatation = false;
+      std::vector<double>                       radius;
+      std::vector<double>                       values;
+      typename MaterialModel<3>::VolumeRatio    revolved_volume_ratio =
+        MaterialModel<3>::VolumeRatio::none;
+      std::vector<Tensor<2, 3>>                 revolved_deformation;
+      std::vector<MaterialResponse<3>>          revolved_responses;
       /// F = I + Grad u and det F at the points of a finite-strain cell;
       /// the smallest det F met at the points and the vertices
       /// (smallest_corner_jacobian()) since the scratch was made, and the
@@ -222,6 +236,37 @@ namespace FrictionalContact
                   const bool                                            with_tangent,
                   CellScratch                                          &scratch,
                   double                                               *new_history) const;
+
+    /// evaluate_cell() for a cell of an axisymmetric scene: the strain
+    /// (or F) with its hoop part u_r / r (F_33 = 1 + u_r / R), the body's
+    /// 3D law, the weight 2 pi r in the points' JxW
+    /// (body_response_revolved.cc).
+    void
+    evaluate_revolved_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                           const Vector                                         &u_ghosted,
+                           const bool                                            with_tangent,
+                           CellScratch                                          &scratch,
+                           double                                               *new_history) const;
+
+    /// The cell force (and matrix) of such a cell, of either kinematics:
+    /// the virtual gradient of dof (a, c) is e_c (x) Grad N_a with N_a / r
+    /// in the hoop entry (3, 3) for c = r.
+    void
+    revolved_force_and_tangent(const bool with_tangent, CellScratch &scratch) const;
+
+    /// The cell averages of such a cell's responses into @p state.
+    void
+    revolved_cell_state(const CellScratch &scratch,
+                        const double      *committed,
+                        const types::material_id id,
+                        CellState<dim>    &state) const;
+
+    /// Keeps in @p scratch the smallest det F at the corners of @p cell
+    /// (of the displacement in @p scratch), where the Gauss points do not
+    /// see a cell folded at a corner.
+    void
+    keep_corner_jacobian(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                         CellScratch                                          &scratch) const;
 
     /// The cell force (and matrix) of the responses in @p scratch (of the
     /// cell's kinematics).

@@ -62,15 +62,6 @@ namespace FrictionalContact
     double
     largest_nodal_magnitude(const Vector &u) const;
 
-    /**
-     * The cell average of div u (the mean dilatation that the B-bar element
-     * uses as the volumetric strain) of each locally owned cell, indexed by
-     * active_cell_index() (zero on the other cells). @p u_ghosted must have
-     * ghost entries.
-     */
-    dealii::Vector<double>
-    mean_volumetric_strain(const Vector &u_ghosted) const;
-
     /// Assembles K (unless matrix-free) and p. Call after setup().
     void
     assemble();
@@ -320,10 +311,10 @@ namespace FrictionalContact
                   CellScratch &scratch,
                   const bool   with_matrix = true) const;
 
-    /// The cell matrix of the cell @p scratch's FEValues are at (with its
-    /// @p material), and its divergence integrals and volume.
+    /// The cell matrix of the cell @p scratch's FEValues are at (of the
+    /// body @p id), and its divergence integrals and volume.
     void
-    cell_stiffness(const ElasticConstants<dim> &material, CellScratch &scratch) const;
+    cell_stiffness(const types::material_id id, CellScratch &scratch) const;
 
     const Materials<dim>                     &materials;
     const BoundaryConditions<dim>            &conditions;

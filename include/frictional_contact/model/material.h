@@ -131,6 +131,10 @@ namespace FrictionalContact
     double youngs_modulus;
     double poissons_ratio;
     bool   plane_stress;
+    /// Whether <Material/Two-dimensional model> = axisymmetric: the body
+    /// is a 2D section (x = r, y the axis) of a body of revolution. Its
+    /// 3D law (Materials::revolved()) has it too.
+    bool   axisymmetric;
     /// Whether the mean-dilatation (B-bar) element is used.
     bool   mean_dilatation;
     /// At finite strain, whether a law that flows isochorically takes the
@@ -382,6 +386,27 @@ namespace FrictionalContact
     const MaterialModel<dim> &
     of(const types::material_id id) const;
 
+    /// Whether the scene is axisymmetric (<Material/Two-dimensional model>
+    /// = axisymmetric for every body).
+    bool
+    axisymmetric() const
+    {
+      return !revolved_laws.empty();
+    }
+
+    /// The 3D law of the body of material id @p id of an axisymmetric
+    /// scene: it gives the stress of a strain with the hoop component.
+    const MaterialModel<3> &
+    revolved(const types::material_id id) const;
+
+    /// How many history values a point of the body @p id keeps (of its
+    /// 3D law in an axisymmetric scene).
+    unsigned int
+    history_size(const types::material_id id) const
+    {
+      return axisymmetric() ? revolved(id).n_history_values() : of(id).n_history_values();
+    }
+
     /// Whether some body uses the B-bar element.
     bool
     any_mean_dilatation() const;
@@ -413,5 +438,7 @@ namespace FrictionalContact
   private:
     std::map<types::material_id, std::unique_ptr<MaterialModel<dim>>> materials;
     std::map<types::material_id, std::string>                         names;
+    /// Of an axisymmetric scene (2D): each body's law in 3D.
+    std::map<types::material_id, std::unique_ptr<MaterialModel<3>>> revolved_laws;
   };
 } // namespace FrictionalContact

@@ -83,7 +83,7 @@ namespace FrictionalContact
     unsigned int
     n_values(const types::material_id id) const
     {
-      return quadrature.size() * materials.of(id).n_history_values();
+      return quadrature.size() * materials.history_size(id);
     }
 
     /// What a cell that changes passes on: its own values, or for a cell

@@ -39,11 +39,13 @@ namespace FrictionalContact
     }
   };
 
-  /// The summary of @p results with the contact forces @p contact_forces.
+  /// The summary of @p results with the contact forces @p contact_forces;
+  /// @p axisymmetric: the forces are totals over the revolution.
   template <int dim>
   ContactSummary<dim>
   summarize(const ContactOperator<dim>        &contact,
             const ContactResults<dim>         &results,
             const std::vector<Tensor<1, dim>> &contact_forces,
+            const bool                         axisymmetric,
             const MPI_Comm                     comm);
 } // namespace FrictionalContact
