@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Compares a run of a half-ball scene (parameters/hertz_*.prm,
+"""Compares a run of a half-ball scene (parameters/hertz_*.prm, or a
+rigid ball pressed into a body,
 cattaneo_*.prm) or of a dragged block (sliding_block.prm) with the
 classical solutions of contact mechanics. Reads the run's `statistics`,
 `parameters.prm` and, for the element size, its last `contact-NNNNN.csv`.
@@ -110,6 +111,9 @@ class Scene:
         # Only a ball has a radius Hertz can use (a flat punch has none).
         ball = two_bodies or p.get("Geometry/Model name") == "half ball"
         self.radius = float(p.get(geometry + "Radius", "nan")) if ball else float("nan")
+        # Or a rigid ball (the sphere obstacle) pressed into the body.
+        if not ball and p.get("Contact/Obstacle/Model name") == "sphere":
+            self.radius = float(p["Contact/Obstacle/Sphere/Radius"])
         self.center = [0.0] * 3 if two_bodies else \
             [float(c) for c in p.get(geometry + "Center", "0, 0, 0").split(",")]
         self.planes = int(p.get(geometry + "Symmetry planes", "0"))

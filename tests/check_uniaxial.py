@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Checks a run of a cube in uniaxial stress (tests/j2_uniaxial_*.prm,
-tests/j2_finite_*.prm: rollers on three faces, the top face moved along z)
+tests/j2_finite_*.prm: rollers on three faces, the top face moved along z;
+or a cylinder's axisymmetric section, its top moved along the axis y)
 against the exact stress-strain curve of J2 plasticity with isotropic
 hardening (linear, Voce or a flow curve) and linear kinematic hardening,
 which in uniaxial stress is the 1D law sigma = E (eps - eps_p), yield where
@@ -105,19 +106,24 @@ def main():
 
     finite = p.get("Material/Kinematics", "small strain") == "finite strain"
     nu = float(p["Material/Poisson's ratio"])
+    # The axis of the load: z, or y in an axisymmetric section (x = r, the
+    # third direction the hoop one, t).
+    axisymmetric = p.get("Material/Two-dimensional model") == "axisymmetric"
+    axial = "y" if axisymmetric else "z"
+    others = ("sxx", "stt", "sxy") if axisymmetric else ("sxx", "syy", "sxy", "sxz", "syz")
     strains, lateral_stretches = [], []
     for name in sorted(glob.glob(os.path.join(args.directory, "displacement-*.csv"))):
         with open(name) as f:
             rows = list(csv.DictReader(f))
-        top = [r for r in rows if float(r["z"]) > 0]
-        stretch = sum(1 + float(r["uz"]) / float(r["z"]) for r in top) / len(top)
+        top = [r for r in rows if float(r[axial]) > 0]
+        stretch = sum(1 + float(r["u" + axial]) / float(r[axial]) for r in top) / len(top)
         strains.append(math.log(stretch) if finite else stretch - 1)
         width = max(float(r["x"]) for r in rows)
         lateral_stretches.append([1 + float(r["ux"]) / float(r["x"])
                                   for r in rows if float(r["x"]) > 1e-6 * width])
     path = exact_path(strains, E, sigma_y, H_kin)
 
-    worst = {"szz": 0.0, "other stress": 0.0, "plastic strain": 0.0}
+    worst = {"axial stress": 0.0, "other stress": 0.0, "plastic strain": 0.0}
     if finite:
         worst["lateral stretch"] = 0.0
     files = sorted(glob.glob(os.path.join(args.directory, "stress-*.csv")))
@@ -137,8 +143,9 @@ def main():
                 + [abs(s - math.exp(eps_lateral)) / strain_scale for s in lateral])
         with open(name) as f:
             for row in csv.DictReader(f):
-                worst["szz"] = max(worst["szz"], abs(float(row["szz"]) - sigma) / yield_stress)
-                for c in ("sxx", "syy", "sxy", "sxz", "syz"):
+                worst["axial stress"] = max(worst["axial stress"],
+                                            abs(float(row["s" + 2 * axial]) - sigma) / yield_stress)
+                for c in others:
                     worst["other stress"] = max(worst["other stress"],
                                                 abs(float(row[c])) / yield_stress)
                 worst["plastic strain"] = max(
