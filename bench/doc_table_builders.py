@@ -505,7 +505,18 @@ def stiffness_contrast(root):
     return markdown(header, body)
 
 
+def axisymmetric(root):
+    """bench/axisymmetric.py: each run of the ball on a plate, 3D and
+    axisymmetric, by kind and local refinements."""
+    body = [[r["kind"], r["level"], r["ranks"], thousands(r["d"]), r["force"],
+             r["radius_error_percent"], r["pressure_error_percent"], r["setup_and_solve_s"]]
+            for r in rows(root, "axisymmetric.csv")]
+    return markdown(["kind", "local refinements", "ranks", "d", "P", "radius error %",
+                     "peak pressure error %", "set-up and solve s"], body)
+
+
 TABLES = {
+    "axisymmetric": axisymmetric,
     "o-ring-locking": o_ring_locking,
     "ironing": ironing,
     "finite-strain": finite_strain,

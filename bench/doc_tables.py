@@ -228,7 +228,28 @@ def forming_goal(root):
     return ", ".join(ratios) if ratios else "(bench/forming.py has not run)"
 
 
+def axisymmetric_goal(root):
+    """bench/axisymmetric.py: the set-up and solve time of the 3D run from
+    which every finer one is within 1 % of Hertz's contact radius over that
+    of the axisymmetric one."""
+    ladders = {}
+    for r in rows(root, "axisymmetric.csv"):
+        ladders.setdefault(r["kind"], []).append(
+            (int(r["level"]), float(r["radius_error_percent"]), float(r["setup_and_solve_s"])))
+    reached = {}
+    for kind, ladder in ladders.items():
+        ladder.sort()
+        for i, (_, _, seconds) in enumerate(ladder):
+            if all(error <= 1 for _, error, _ in ladder[i:]):
+                reached[kind] = seconds
+                break
+    if len(reached) != 2:
+        return "(bench/axisymmetric.py has not run)"
+    return f"{reached['3D'] / reached['axisymmetric']:.0f}"
+
+
 QUOTES = {
+    "axisymmetric-goal": axisymmetric_goal,
     "process-start": process_start,
     "forming-goal": forming_goal,
     "finite-strain-block": finite_strain_block,

@@ -1,22 +1,39 @@
 # Axisymmetric bodies (<Material/Two-dimensional model> = axisymmetric: the
 # section x = r >= 0 of a body of revolution) against the closed forms of
 # the 3D problems they stand for.
-# - The shipped ball on a rigid plane (parameters/hertz_axisymmetric.prm),
-#   its runs on 1 and 3 ranks: Hertz's 3D contact radius within 1 %, the
-#   peak pressure within 2 %, the pressure profile within 5 % of p0.
-foreach(_variant 1 3)
-  set(_name hertz_axisymmetric.hertz)
-  set(_fixture scene_hertz_axisymmetric)
-  if(_variant EQUAL 3)
-    set(_name hertz_axisymmetric.mpirun=3.hertz)
-    set(_fixture scene_hertz_axisymmetric_3)
-  endif()
-  add_test(NAME ${_name}
-    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py hertz
-      ${CMAKE_CURRENT_BINARY_DIR}/scenes/hertz_axisymmetric/${_variant}/output-hertz-axisymmetric
-      --radius-tolerance 0.01 --pressure-tolerance 0.02 --profile-tolerance 0.05)
-  set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED ${_fixture})
+# - The shipped ball on a rigid plane (parameters/hertz_axisymmetric.prm)
+#   and ball on a plate (ball_on_plate_axisymmetric.prm, a mortar pair),
+#   their runs on 1 and 3 ranks: Hertz's 3D contact radius within 1 %, the
+#   peak pressure within 2 %, the pressure profile within 5 % of p0; and
+#   the ball on the plate's force within 0.5 % of the 3D scene's
+#   (ball_on_plate.prm, a quarter: its meshes change the force by 0.2 %
+#   from one refinement to the next, bench/axisymmetric.py).
+foreach(_scene "hertz_axisymmetric:output-hertz-axisymmetric"
+               "ball_on_plate_axisymmetric:output-ball-on-plate-axisymmetric")
+  string(REPLACE ":" ";" _scene "${_scene}")
+  list(GET _scene 0 _name)
+  list(GET _scene 1 _folder)
+  foreach(_variant 1 3)
+    set(_test ${_name}.hertz)
+    set(_fixture scene_${_name})
+    if(_variant EQUAL 3)
+      set(_test ${_name}.mpirun=3.hertz)
+      set(_fixture scene_${_name}_3)
+    endif()
+    add_test(NAME ${_test}
+      COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py hertz
+        ${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_variant}/${_folder}
+        --radius-tolerance 0.01 --pressure-tolerance 0.02 --profile-tolerance 0.05)
+    set_tests_properties(${_test} PROPERTIES FIXTURES_REQUIRED ${_fixture})
+  endforeach()
 endforeach()
+add_test(NAME ball_on_plate_axisymmetric.same_force_as_3d
+  COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py same-force
+    ${CMAKE_CURRENT_BINARY_DIR}/scenes/ball_on_plate_axisymmetric/1/output-ball-on-plate-axisymmetric
+    --reference ${CMAKE_CURRENT_BINARY_DIR}/scenes/ball_on_plate/2/output-ball-on-plate
+    --tolerance 0.005)
+set_tests_properties(ball_on_plate_axisymmetric.same_force_as_3d PROPERTIES
+  FIXTURES_REQUIRED "scene_ball_on_plate_axisymmetric;scene_ball_on_plate_2")
 # - A rigid ball pressed into an elastic half space, the same bounds.
 add_scene_check(hertz_rigid_ball_axisymmetric 2 hertz check_analytic.py hertz OUTPUT
   --radius-tolerance 0.01 --pressure-tolerance 0.02 --profile-tolerance 0.05)
@@ -28,3 +45,27 @@ add_scene_check(lame_plastic_sphere_axisymmetric 2 analytic check_lame_plastic.p
 #   finite-strain J2 law: exact to 1e-10, on 3 ranks.
 add_scene_check(j2_finite_compression_axisymmetric 3 exact check_uniaxial.py OUTPUT
   --tolerance 1e-10)
+# - The contact patch tests of axisymmetric bodies, their meshes not
+#   matching: two cylinders through a mortar pair pressed by a pressure,
+#   friction 0.3, on 3 ranks (to 1e-8), the same pressed by a displacement
+#   with Kanno's method (1e-8), and a cylinder pressed by a rigid plate
+#   from a Gmsh line mesh (1e-10, 2 ranks): the exact linear displacement
+#   of uniaxial stress and the uniform contact pressure.
+foreach(_case "patch_test_axisymmetric:3:1e-8:ux=0.15*x:uy=-0.5*y:0.5"
+              "patch_test_axisymmetric_primal_dual:1:1e-8:ux=0.0015*x:uy=-0.005*y:0.005"
+              "patch_test_tool_axisymmetric:2:1e-10:ux=0.003*x:uy=-0.01*y:0.01")
+  string(REPLACE ":" ";" _case "${_case}")
+  list(GET _case 0 _scene)
+  list(GET _case 1 _ranks)
+  list(GET _case 2 _tolerance)
+  list(GET _case 3 _ux)
+  list(GET _case 4 _uy)
+  list(GET _case 5 _pressure)
+  add_scene_check(${_scene} ${_ranks} exact compare_csv.py
+    OUTPUT/displacement-00001.csv --exact ${_ux} ${_uy} --tolerance ${_tolerance})
+  add_test(NAME ${_scene}.uniform_pressure
+    COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py
+      ${CMAKE_CURRENT_BINARY_DIR}/${_scene}/output-${_scene}/contact-00001.csv
+      --exact "pressure=${_pressure}" --tolerance ${_tolerance})
+  set_tests_properties(${_scene}.uniform_pressure PROPERTIES FIXTURES_REQUIRED ${_scene})
+endforeach()

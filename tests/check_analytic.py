@@ -10,6 +10,7 @@ usage: check_analytic.py hertz OUTPUT_DIR [--radius-tolerance 0.05]
                                           [--profile-tolerance 0.05]
        check_analytic.py cattaneo OUTPUT_DIR --rows FIRST-LAST
        check_analytic.py sliding OUTPUT_DIR [--tolerance 1e-6]
+       check_analytic.py same-force OUTPUT_DIR --reference OTHER_DIR --tolerance 0.005
 
 hertz: contact radius (3D) or half-width (2D) and peak pressure against
   Hertz's formulas for the measured total normal force P, relative errors
@@ -23,6 +24,8 @@ hertz: contact radius (3D) or half-width (2D) and peak pressure against
 cattaneo: on each row, the stick zone's radius (from the stick area, as
   above) within one element size of a (1 - Q / (mu P))^k, k = 1/3 for the
   ball (Mindlin), 1/2 for the cylinder, with a the measured contact radius.
+same-force: the total normal force of the last increment against that of
+  another run of the same bodies (a 3D quarter and an axisymmetric section).
 sliding: rows where every node in contact slips have T = mu N (relative
   tolerance), rows with sticking nodes have T < mu N; at least one of each.
 """
@@ -268,19 +271,34 @@ def check_sliding(scene, args):
     return ok
 
 
+def check_same_force(scene, args):
+    """The total normal force of the last increment against that of the
+    run in --reference (each with its symmetric copies: a 3D quarter and
+    an axisymmetric section of the same bodies give the whole force)."""
+    P = scene.normal_force(scene.rows[-1])
+    reference = Scene(args.reference)
+    P_reference = reference.normal_force(reference.rows[-1])
+    error = abs(P - P_reference) / abs(P_reference)
+    print(f"{scene.label()}: P = {P:.6g} against {P_reference:.6g} of the "
+          f"{reference.label()} run (difference {100 * error:.3f} %, allowed "
+          f"{100 * args.tolerance:g} %)")
+    return error <= args.tolerance
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("problem", choices=["hertz", "cattaneo", "sliding"])
+    parser.add_argument("problem", choices=["hertz", "cattaneo", "sliding", "same-force"])
     parser.add_argument("directory")
     parser.add_argument("--radius-tolerance", type=float, default=0.05)
     parser.add_argument("--pressure-tolerance", type=float, default=0.10)
     parser.add_argument("--rows", default="2-3")
     parser.add_argument("--tolerance", type=float, default=1e-6)
     parser.add_argument("--profile-tolerance", type=float, default=None)
+    parser.add_argument("--reference", help="same-force: the other run's output folder")
     args = parser.parse_args()
     scene = Scene(args.directory)
     check = {"hertz": check_hertz, "cattaneo": check_cattaneo,
-             "sliding": check_sliding}[args.problem]
+             "sliding": check_sliding, "same-force": check_same_force}[args.problem]
     ok = check(scene, args)
     print("PASSED" if ok else "FAILED")
     return 0 if ok else 1

@@ -130,12 +130,6 @@ namespace FrictionalContact
                        "(and Matrix-free stiffness) does not serve axisymmetric "
                        "bodies (<Material/Two-dimensional model> = axisymmetric) "
                        "yet: set the preconditioner to auto or AMG");
-    if (materials->axisymmetric() && contact->has_pairs())
-      throw InputError("<Contact/Pairs> (contact between bodies, and rigid tools) "
-                       "does not serve axisymmetric scenes (<Material/Two-"
-                       "dimensional model> = axisymmetric) yet: press the body "
-                       "on an obstacle (<Contact/Obstacle>), or take plane strain "
-                       "or 3D");
   }
 
 

@@ -16,14 +16,25 @@ namespace FrictionalContact
 {
   namespace
   {
-    /// The integral of each vertex's Q1 function over the face @p x.
+    /// The integral of each vertex's Q1 function over the face @p x (of
+    /// the surface of revolution it sweeps where @p revolved: 2D only).
     template <int dim>
     std::array<double, GeometryInfo<dim - 1>::vertices_per_cell>
-    lumped_weights(const MortarSegments::FaceVertices<dim> &x)
+    lumped_weights(const MortarSegments::FaceVertices<dim> &x, const bool revolved)
     {
       std::array<double, GeometryInfo<dim - 1>::vertices_per_cell> weights{};
       if constexpr (dim == 2)
-        weights[0] = weights[1] = x[0].distance(x[1]) / 2;
+        {
+          // int_0^1 (1 - s) (r_0 (1 - s) + r_1 s) ds = r_0 / 3 + r_1 / 6.
+          const double length = x[0].distance(x[1]);
+          weights[0]          = length / 2;
+          weights[1]          = length / 2;
+          if (revolved)
+            {
+              weights[0] = 2 * numbers::PI * length * (x[0][0] / 3 + x[1][0] / 6);
+              weights[1] = 2 * numbers::PI * length * (x[1][0] / 3 + x[0][0] / 6);
+            }
+        }
       else
         {
           const QGauss<2> gauss(2);
@@ -103,6 +114,7 @@ namespace FrictionalContact
   {
     const IndexSet &owned = body.locally_owned_dofs();
     const MPI_Comm  comm  = body.get_mpi_communicator();
+    revolved              = body.get_materials().axisymmetric();
     // The slave faces of every cell this rank sees (to find the slave
     // vertices it owns); only those of its own cells are integrated.
     slave_faces = collect_faces(body, slave_id, [](const auto &) { return true; });
@@ -338,7 +350,7 @@ namespace FrictionalContact
         {
           const MortarSegments::FaceVertices<dim> x = current_vertices(face, u_ghosted);
           const Tensor<1, dim> normal = outward_normal(x, face.orientation);
-          const auto           lumped = lumped_weights<dim>(x);
+          const auto           lumped = lumped_weights<dim>(x, revolved);
           for (unsigned int a = 0; a < n_face_vertices; ++a)
             {
               for (unsigned int c = 0; c < dim; ++c)
@@ -376,7 +388,7 @@ namespace FrictionalContact
               if (fade == 0)
                 continue;
               MortarSegments::FaceIntegrals<dim> integrals = MortarSegments::face_integrals<dim>(
-                x, normal, y, tool_frames ? &tool_normals[m] : nullptr);
+                x, normal, y, tool_frames ? &tool_normals[m] : nullptr, revolved);
               Table<2, double> &M = integrals.M;
               if (fade < 1)
                 for (unsigned int a = 0; a < n_face_vertices; ++a)

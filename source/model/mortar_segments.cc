@@ -179,7 +179,8 @@ namespace FrictionalContact
       integrals_2d(const FaceVertices<2>          &slave,
                    const Tensor<1, 2>             &normal,
                    const FaceVertices<2>          &master,
-                   const MasterNormals<2>         *master_normals)
+                   const MasterNormals<2>         *master_normals,
+                   const bool                      revolved)
       {
         FaceIntegrals<2> result{Table<2, double>(2, 2), Table<2, Tensor<1, 2>>(2, 2)};
         Table<2, double> &M = result.M;
@@ -199,15 +200,16 @@ namespace FrictionalContact
         if (high - low <= 1e-12 || std::abs(across) < 1e-14 * length ||
             std::abs(s1 - s0) < 1e-14)
           return result;
-        const Table<2, double> A = dual_coefficients<2>(slave);
+        const Table<2, double> A = dual_coefficients<2>(slave, revolved);
         // d t / d x across the normal: the master's N_1 = t, N_0 = 1 - t.
         const Tensor<1, 2> t_gradient({normal[1] / across, -normal[0] / across});
         const QGauss<1>        gauss(2);
         for (unsigned int q = 0; q < gauss.size(); ++q)
           {
             const double   s   = low + gauss.point(q)[0] * (high - low);
-            const double   JxW = gauss.weight(q) * (high - low) * length;
             const Point<2> x   = slave[0] + s * edge;
+            const double   JxW = gauss.weight(q) * (high - low) * length *
+                               (revolved ? 2 * numbers::PI * x[0] : 1.);
             // The master's parameter: along the normal, or linear between
             // the vertices' projections along their own normals.
             const double t = master_normals ? (s - s0) / (s1 - s0) :
@@ -336,7 +338,7 @@ namespace FrictionalContact
 
     template <int dim>
     Table<2, double>
-    dual_coefficients(const FaceVertices<dim> &slave)
+    dual_coefficients(const FaceVertices<dim> &slave, const bool revolved)
     {
       constexpr unsigned int n = GeometryInfo<dim - 1>::vertices_per_cell;
       const QGauss<dim - 1>  gauss(3);
@@ -351,8 +353,12 @@ namespace FrictionalContact
             jacobian = cross_product_3d(face_tangent(slave, gauss.point(q), 0),
                                         face_tangent(slave, gauss.point(q), 1))
                          .norm();
-          const auto   N  = shape_values<dim>(gauss.point(q));
-          const double dx = gauss.weight(q) * jacobian;
+          const auto N  = shape_values<dim>(gauss.point(q));
+          double     dx = gauss.weight(q) * jacobian;
+          // The measure of revolution's weight r (its 2 pi cancels in A).
+          if constexpr (dim == 2)
+            if (revolved)
+              dx *= slave[0][0] + gauss.point(q)[0] * (slave[1][0] - slave[0][0]);
           for (unsigned int a = 0; a < n; ++a)
             {
               lumped[a] += N[a] * dx;
@@ -375,10 +381,11 @@ namespace FrictionalContact
     face_integrals(const FaceVertices<dim>  &slave,
                    const Tensor<1, dim>     &slave_normal,
                    const FaceVertices<dim>  &master,
-                   const MasterNormals<dim> *master_normals)
+                   const MasterNormals<dim> *master_normals,
+                   const bool                revolved)
     {
       if constexpr (dim == 2)
-        return integrals_2d(slave, slave_normal, master, master_normals);
+        return integrals_2d(slave, slave_normal, master, master_normals, revolved);
       else
         return integrals_3d(slave, slave_normal, master, master_normals);
     }
@@ -484,19 +491,21 @@ namespace FrictionalContact
     template std::array<double, 4>
     shape_values<3>(const Point<2> &);
     template Table<2, double>
-    dual_coefficients<2>(const FaceVertices<2> &);
+    dual_coefficients<2>(const FaceVertices<2> &, const bool);
     template Table<2, double>
-    dual_coefficients<3>(const FaceVertices<3> &);
+    dual_coefficients<3>(const FaceVertices<3> &, const bool);
     template FaceIntegrals<2>
     face_integrals<2>(const FaceVertices<2> &,
                       const Tensor<1, 2> &,
                       const FaceVertices<2> &,
-                      const MasterNormals<2> *);
+                      const MasterNormals<2> *,
+                      const bool);
     template FaceIntegrals<3>
     face_integrals<3>(const FaceVertices<3> &,
                       const Tensor<1, 3> &,
                       const FaceVertices<3> &,
-                      const MasterNormals<3> *);
+                      const MasterNormals<3> *,
+                      const bool);
     template Tensor<1, 2>
     unit_normal<2>(const FaceVertices<2> &);
     template Tensor<1, 3>

@@ -325,6 +325,9 @@ namespace FrictionalContact
 
     types::boundary_id    slave_id, master_id;
     const RigidTool<dim> *tool;
+    /// Whether the scene is axisymmetric (setup()): the pair's integrals
+    /// are then over the surfaces of revolution (weight 2 pi r).
+    bool revolved = false;
     bool                  tool_frames = false;
     std::vector<Face>  slave_faces;
     /// The master faces of this rank's cells, and of all ranks (the dofs

@@ -60,20 +60,25 @@ namespace FrictionalContact
      * projected face): the faces of a faceted master with shared vertex
      * normals then cover the slave face without gaps or overlaps. Zero if
      * they do not overlap or do not face each other. The row sums of M
-     * are the weights D_aa = int phi_a over the covered part.
+     * are the weights D_aa = int phi_a over the covered part. With
+     * @p revolved (2D: an axisymmetric scene, x = r), the integrals are
+     * over the surfaces of revolution, with the weight 2 pi r, and the
+     * dual basis is biorthogonal in that measure.
      */
     template <int dim>
     FaceIntegrals<dim>
     face_integrals(const FaceVertices<dim>  &slave,
                    const Tensor<1, dim>     &slave_normal,
                    const FaceVertices<dim>  &master,
-                   const MasterNormals<dim> *master_normals = nullptr);
+                   const MasterNormals<dim> *master_normals = nullptr,
+                   const bool                revolved       = false);
 
-    /// The dual basis coefficients A = D_e M_e^-1 of the slave face
-    /// (exposed for the tests: biorthogonality on any quad).
+    /// The dual basis coefficients A = D_e M_e^-1 of the slave face (with
+    /// the weight r where @p revolved; exposed for the tests:
+    /// biorthogonality on any quad).
     template <int dim>
     Table<2, double>
-    dual_coefficients(const FaceVertices<dim> &slave);
+    dual_coefficients(const FaceVertices<dim> &slave, const bool revolved = false);
 
     /// The unit normal of a face at its centre, (x_1 - x_0) turned
     /// clockwise in 2D, a x b for the mean edge vectors a (along the first
