@@ -4,7 +4,8 @@
 # scripts/render_contact.py on a virtual display (the time with the most
 # contact; ironing_2d, strip_drawing_2d and the billets at their last),
 # and for 2D scenes scripts/plot_contact_profile.py
-# (doc/figures/<scene>-profile.png). A
+# (doc/figures/<scene>-profile.png), for axisymmetric ones also
+# scripts/revolve_section.py (doc/figures/<scene>-revolved.png). A
 # ParaView state of each run (contact.pvsm) is saved in its output folder,
 # next to the data it names: open it in the GUI (File > Load State).
 #
@@ -58,6 +59,12 @@ for scene in "${scenes[@]}"; do
     "$python" "$root/scripts/plot_contact_profile.py" "$directory" \
       --out "$out/$name-profile.png" | grep '^wrote' || {
         echo "the profile plot of $name failed" >&2; exit 1; }
+  fi
+  # Axisymmetric: the section turned about its axis, the bodies it stands for.
+  if grep -q "^ *set Two-dimensional model *= *axisymmetric" "$directory/parameters.prm"; then
+    "$root/scripts/headless.sh" pvbatch --no-mpi "$root/scripts/revolve_section.py" "$directory" \
+      --out "$out" --name "$name-revolved" 2>&1 | grep '^wrote' || {
+        echo "the revolved picture of $name failed" >&2; exit 1; }
   fi
 done
 echo "pictures in $out (runs in $scratch)"

@@ -7,7 +7,8 @@ length, and mu times the pressure, the bound the traction reaches where
 the node slips; markers show each node's state. For a half disc on a rigid
 or elastic base (parameters/hertz_2d.prm, cattaneo_2d.prm), Hertz's
 pressure p0 sqrt(1 - x^2 / a^2) for the run's total normal force is drawn
-beside it.
+beside it (for an axisymmetric section of a ball, hertz_axisymmetric.prm,
+his point contact's).
 
 usage: plot_contact_profile.py OUTPUT_DIR [--increment N] [--out FILE.png]
 By default the increment with the most nodes in contact, written to
@@ -61,12 +62,17 @@ def hertz_curve(scene, rows):
     if scene is None or scene.dim != 2 or math.isnan(scene.radius) or math.isnan(scene.E_star):
         return None
     # The normal force of this increment: the sum of the nodal reactions,
-    # doubled for the symmetry plane.
+    # doubled for the symmetry plane (an axisymmetric section's are
+    # totals over the revolution: Hertz's point contact).
     P = scene.copies * sum(abs(float(r["rn"])) for r in rows)
-    a = math.sqrt(4 * P * scene.radius / (math.pi * scene.E_star))
+    if scene.axisymmetric:
+        a = (3 * P * scene.radius / (4 * scene.E_star)) ** (1 / 3)
+        p0 = 3 * P / (2 * math.pi * a ** 2)
+    else:
+        a = math.sqrt(4 * P * scene.radius / (math.pi * scene.E_star))
+        p0 = 2 * P / (math.pi * a)
     if a > 0.2 * scene.radius:
         return None
-    p0 = 2 * P / (math.pi * a)
     centre = scene.center[0]
     # Only the side the mesh models where a symmetry plane cuts it.
     half = math.pi / 2 if scene.planes > 0 else math.pi
@@ -122,8 +128,10 @@ def main():
         low, high = min(touching), max(touching)
         margin = 0.5 * max(high - low, 1e-12)
         axis.set_xlim(max(min(x), low - margin), min(max(x), high + margin))
-    axis.set_xlabel("x")
-    axis.set_ylabel("traction (force per length)")
+    axisymmetric = scene is not None and scene.axisymmetric
+    axis.set_xlabel("r (x of the axisymmetric section)" if axisymmetric else "x")
+    axis.set_ylabel("traction (force per area)" if axisymmetric else
+                    "traction (force per length)")
     axis.set_title(f"{os.path.basename(directory)}, {os.path.basename(path)}")
     axis.grid(True, lw=0.3)
     axis.legend(fontsize=8)

@@ -69,3 +69,11 @@ foreach(_case "patch_test_axisymmetric:3:1e-8:ux=0.15*x:uy=-0.5*y:0.5"
       --exact "pressure=${_pressure}" --tolerance ${_tolerance})
   set_tests_properties(${_scene}.uniform_pressure PROPERTIES FIXTURES_REQUIRED ${_scene})
 endforeach()
+# - scripts/revolve_section.py draws the shipped ball on the plate turned
+#   about its axis (skipped without ParaView and Xvfb).
+add_test(NAME revolve_section
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/render_contact.sh ${PROJECT_SOURCE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR}/scenes/ball_on_plate_axisymmetric/1/output-ball-on-plate-axisymmetric
+          revolve_section.py)
+set_tests_properties(revolve_section PROPERTIES
+  FIXTURES_REQUIRED scene_ball_on_plate_axisymmetric SKIP_RETURN_CODE 77 TIMEOUT 420)

@@ -1,15 +1,18 @@
 #!/bin/bash
-# Renders a run's output with scripts/render_contact.py on a virtual display
-# (scripts/headless.sh) and checks that the picture was written. Skipped
-# (exit code 77) where ParaView or Xvfb is not installed: they are optional
-# (apt-get install paraview python3-paraview xvfb).
+# Renders a run's output with scripts/render_contact.py (or the ParaView
+# script of scripts/ given third, which takes the same --out, --name and
+# --size) on a virtual display (scripts/headless.sh) and checks that the
+# picture was written. Skipped (exit code 77) where ParaView or Xvfb is not
+# installed: they are optional (apt-get install paraview python3-paraview
+# xvfb).
 #
-# usage: render_contact.sh <project source folder> <output directory>
+# usage: render_contact.sh <project source folder> <output directory> [script]
 set -u
-if [ $# -ne 2 ] || [ "$1" = "--help" ]; then
-  sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'
+if [ $# -lt 2 ] || [ $# -gt 3 ] || [ "$1" = "--help" ]; then
+  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
   [ $# -eq 1 ] && exit 0 || exit 2
 fi
+script=${3:-render_contact.py}
 for tool in pvbatch Xvfb; do
   if ! command -v $tool > /dev/null; then
     echo "SKIPPED: $tool is not installed (apt-get install paraview python3-paraview xvfb)"
@@ -21,7 +24,7 @@ folder=$(mktemp -d)
 # leaves behind can keep this script waiting.
 for attempt in 1 2 3; do
   "$1/scripts/headless.sh" --timeout 120 pvbatch --no-mpi \
-    "$1/scripts/render_contact.py" "$2" --out "$folder" --name render \
+    "$1/scripts/$script" "$2" --out "$folder" --name render \
     --size 900x300 > "$folder/log" 2>&1 < /dev/null
   code=$?
   grep -v '^\s*$' "$folder/log" | tail -5
