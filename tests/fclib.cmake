@@ -3,15 +3,23 @@
 # solution) on 1 and 2 ranks, solves of FCLIB
 # files from outside the project, and the errors of the --fclib mode.
 
-# Also a two-body increment (fclib/round_trip_two_bodies) and one re-solved
-# on adapted meshes (fclib/round_trip_adapted).
+# Also a two-body increment (fclib/round_trip_two_bodies), an axisymmetric
+# one (fclib/round_trip_axisymmetric, 3 ranks) and one re-solved on adapted
+# meshes (fclib/round_trip_adapted).
 foreach(_case "0:example2_export:round_trip" "2:example2_export:round_trip"
               "2:two_bodies_export:round_trip_two_bodies"
+              "3:axisymmetric_export:round_trip_axisymmetric:primal_dual_tight"
               "0:adapted_export:round_trip_adapted")
   string(REPLACE ":" ";" _case "${_case}")
   list(GET _case 0 _ranks)
   list(GET _case 1 _scene)
   list(GET _case 2 _name)
+  # Kanno's parameters: fclib/primal_dual.prm, or the case's own.
+  set(_primal_dual primal_dual)
+  list(LENGTH _case _n)
+  if(_n GREATER 3)
+    list(GET _case 3 _primal_dual)
+  endif()
   set(_name fclib/${_name})
   if(_ranks GREATER 0)
     set(_name ${_name}.mpirun=${_ranks})
@@ -21,7 +29,7 @@ foreach(_case "0:example2_export:round_trip" "2:example2_export:round_trip"
   add_test(NAME ${_name}
     COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/fclib_round_trip.py
             $<TARGET_FILE:contact> ${_scene}.prm --ranks ${_ranks}
-            --primal-dual ${CMAKE_CURRENT_SOURCE_DIR}/fclib/primal_dual.prm
+            --primal-dual ${CMAKE_CURRENT_SOURCE_DIR}/fclib/${_primal_dual}.prm
             --amg ${CMAKE_CURRENT_SOURCE_DIR}/fclib/amg.prm
     WORKING_DIRECTORY ${_directory})
   set(_processors 1)

@@ -295,8 +295,11 @@ namespace FrictionalContact
     data_out.add_data_vector(von_mises, "von_mises_stress");
     data_out.add_data_vector(mean_stress, "mean_stress");
     data_out.add_data_vector(plastic_strain, "equivalent_plastic_strain");
-    // SymmetricTensor<2, 3>'s order of independent components.
-    const char *component[6] = {"xx", "yy", "zz", "xy", "xz", "yz"};
+    // SymmetricTensor<2, 3>'s order of independent components (the third
+    // direction of an axisymmetric section is the hoop one, t).
+    const bool  revolved         = body.get_materials().axisymmetric();
+    const char *component[6]     = {"xx", "yy", revolved ? "tt" : "zz",
+                                    "xy", revolved ? "xt" : "xz", revolved ? "yt" : "yz"};
     for (unsigned int k = 0; k < 6; ++k)
       data_out.add_data_vector(plastic_tensor[k],
                                std::string("plastic_strain_") + component[k]);
