@@ -77,3 +77,9 @@ add_test(NAME revolve_section
           revolve_section.py)
 set_tests_properties(revolve_section PROPERTIES
   FIXTURES_REQUIRED scene_ball_on_plate_axisymmetric SKIP_RETURN_CODE 77 TIMEOUT 420)
+# - A press fit: a ring on a shaft with a radial interference, two bodies
+#   from one Gmsh file through a mortar pair (<Contact/Interference fit>):
+#   Lame's interference-fit pressure within 1 %, uniform along the fit, on
+#   3 ranks; without the entry the overlap is refused.
+add_scene_check(press_fit_axisymmetric 3 lame check_press_fit.py OUTPUT
+  --shaft-radius 1 --outer-radius 2 --interference 0.001 --tolerance 0.01)

@@ -38,6 +38,18 @@ namespace FrictionalContact
       "the finer (doc/user-guide.md). A third field is the pair's "
       "friction coefficient ('block bottom : base top : 0.3'); without it "
       "the pair has <Friction coefficient>.");
+    prm.declare_entry("Interference fit",
+                      "false",
+                      Patterns::Bool(),
+                      "Whether the bodies of a pair may overlap at the "
+                      "start: an interference (press or shrink) fit, a "
+                      "ring made smaller than the shaft it sits on. The "
+                      "first increment pushes the overlap out along the "
+                      "slave normals as the contact pressure builds up "
+                      "(linear elastic bodies: at once; solve it in "
+                      "increments at finite strain). false: an overlap is "
+                      "an error of the geometry and stops the run before "
+                      "anything is written.");
     prm.declare_entry("Friction coefficient",
                       "0",
                       Patterns::Double(0.),
@@ -84,7 +96,8 @@ namespace FrictionalContact
                                         const BoundaryNames &names)
   {
     prm.enter_subsection("Contact");
-    const double mu = prm.get_double("Friction coefficient");
+    const double mu  = prm.get_double("Friction coefficient");
+    interference_fit = prm.get_bool("Interference fit");
     cones.emplace_back(mu);
     bodies_every_newton_iterate =
       prm.get("Geometry between bodies") == "every Newton iterate";
@@ -372,14 +385,15 @@ namespace FrictionalContact
     for (const MortarInterface<dim> &interface : interfaces)
       face_size = std::max(face_size, interface.search_distance() / 2);
     const PlacedMinimum<dim> overlapping = deepest[1].over_ranks(mpi_communicator);
-    if (-overlapping.value > 1e-2 * face_size)
+    if (-overlapping.value > 1e-2 * face_size && !interference_fit)
       throw InputError("<Contact/Pairs>: the bodies overlap at the start: "
                        "the slave vertex at " + overlapping.place() + " is " +
                        Input::to_text(-overlapping.value) +
                        " inside the other body or tool; move them apart "
                        "(for stacked blocks, <Geometry/Stacked blocks/Block "
                        "offset>; for a tool, <Contact/Rigid tool/Translation> "
-                       "at t = 0)");
+                       "at t = 0; or, for a press or shrink fit, "
+                       "<Contact/Interference fit> = true)");
   }
 
 

@@ -556,6 +556,9 @@ namespace FrictionalContact
 
     /// The obstacle's friction cone, then one per pair (in <Contact/Pairs>'s order).
     std::vector<FrictionCone<dim>>               cones;
+    /// <Contact/Interference fit>: the pairs' bodies may overlap at the
+    /// start.
+    bool interference_fit = false;
     std::set<types::boundary_id>                 contact_boundaries;
     /// See bodies_facing_contact().
     std::set<types::material_id>                 facing_contact;
