@@ -24,10 +24,6 @@ import argparse
 import os
 import sys
 
-from paraview.simple import (ColorBy, ExtractSurface, GetActiveViewOrCreate, PVDReader,
-                             Render, RotationalExtrusion, SaveScreenshot, Show, Transform,
-                             WarpByVector)
-
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
@@ -46,6 +42,13 @@ def main():
     out = args.out or os.path.join(directory, "figures")
     os.makedirs(out, exist_ok=True)
     name = args.name or os.path.basename(directory) + "-revolved"
+    try:
+        from paraview.simple import (ColorBy, ExtractSurface, GetActiveViewOrCreate,
+                                     PVDReader, Render, RotationalExtrusion, SaveScreenshot,
+                                     Show, Transform, WarpByVector)
+    except ImportError:
+        sys.exit("ParaView's Python is missing: run with pvbatch "
+                 "(apt-get install paraview xvfb; scripts/headless.sh pvbatch ...)")
 
     reader = PVDReader(FileName=pvd)
     reader.UpdatePipeline(max(reader.TimestepValues or [0]))

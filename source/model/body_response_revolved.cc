@@ -13,11 +13,13 @@ namespace FrictionalContact
 {
   namespace
   {
-    /// The hoop entry of the virtual gradient of dof (a, r) at a point:
-    /// N_a / r.
+    /// A point of an axisymmetric cell: the gradients and values of the
+    /// vertices' functions and the radius (dim is 2; the class compiles for
+    /// 3 as the body's other members do, and serves no 3D cell).
+    template <int dim>
     struct RevolvedPoint
     {
-      const Tensor<1, 2> *gradients;
+      const Tensor<1, dim> *gradients;
       const double       *values;
       double              radius;
 
@@ -51,7 +53,6 @@ namespace FrictionalContact
     CellScratch                                          &scratch,
     double                                               *new_history) const
   {
-    static_assert(dim == 2, "an axisymmetric scene is two-dimensional");
     using VolumeRatio            = typename MaterialModel<3>::VolumeRatio;
     const MaterialModel<3> &law  = materials.revolved(cell->material_id());
     const unsigned int n_vertices = scratch.dof.size();
@@ -82,7 +83,7 @@ namespace FrictionalContact
     for (unsigned int q = 0; q < scratch.n_points; ++q)
       {
         const double        JxW = scratch.JxW[q];
-        const RevolvedPoint point{scratch.gradients_at(q),
+        const RevolvedPoint<dim> point{scratch.gradients_at(q),
                                   &scratch.values[q * n_vertices],
                                   scratch.radius[q]};
         // The 3D displacement gradient: the in-plane one and u_r / r.
@@ -160,7 +161,7 @@ namespace FrictionalContact
     const bool         b_bar      = !finite && scratch.revolved_mean_dilatation;
     const bool averages  = finite && scratch.revolved_volume_ratio != VolumeRatio::none;
     const bool pointwise = scratch.revolved_volume_ratio == VolumeRatio::point;
-    constexpr unsigned int max_points = 9;
+    constexpr unsigned int max_points = dim == 2 ? 9 : 27;
     constexpr unsigned int n_corners  = GeometryInfo<dim>::vertices_per_cell;
     const unsigned int     n_points   = scratch.n_points;
     const unsigned int     n_rows     = !averages ? 0 : pointwise ? n_points : 1;
@@ -174,7 +175,7 @@ namespace FrictionalContact
       {
         const double               JxW = scratch.JxW[q];
         const MaterialResponse<3> &r   = scratch.revolved_responses[q];
-        const RevolvedPoint        point{scratch.gradients_at(q),
+        const RevolvedPoint<dim>   point{scratch.gradients_at(q),
                                   &scratch.values[q * n_vertices],
                                   scratch.radius[q]};
         const Tensor<2, 3> F = finite ? scratch.revolved_deformation[q] :
