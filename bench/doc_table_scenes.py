@@ -28,6 +28,8 @@ SCENE_POINTS = {
     "ball_on_plate": "Hertz between two elastic bodies of other materials, both meshes adapted to the contact",
     "ball_on_plate_axisymmetric": "the ball on the plate as the axisymmetric section of both bodies: the 3D problem solved in 2D",
     "hertz_axisymmetric": "Hertz's ball on a plane as its axisymmetric section (x = r): the 3D contact radius and pressure from a 2D mesh",
+    "ball_indentation_axisymmetric": "a hardness test: a rigid ball pressed into steel (finite-strain J2, Voce) and lifted off, axisymmetric: the impression it leaves, Tabor's hardness",
+    "shrink_fit_axisymmetric": "a hub shrunk on a shaft (an interference fit, axisymmetric), then the shaft pushed out: the pressure peaks at the hub's ends, the fit slips from them inwards",
     "flat_punch_2d": "a rigid flat punch from a Gmsh line mesh pressed into a base and dragged until it slides",
     "scratch_3d": "a scratch test: a rigid stylus from an STL file pressed into a slab and dragged",
     "lame_3d": "Lamé's thick sphere of rubber (nu = 0.4999) under internal pressure: the B-bar element against the exact solution",

@@ -97,13 +97,21 @@ def main():
 
     directory = os.path.abspath(args.output_directory)
     path = chosen_file(directory, args.increment)
-    rows = sorted(read_rows(path), key=lambda r: float(r["x"]))
+    rows = read_rows(path)
     if "rt2" in rows[0]:
         sys.exit("a 3D run: this plot is for 2D contact boundaries "
                  "(render 3D runs with scripts/render_contact.py)")
     scene = read_scene(directory)
     mu = scene.mu if scene is not None else float("nan")
-    x = [float(r["x"]) for r in rows]
+    # Along the coordinate in which the zone in contact (or, with none, the
+    # contact boundary) extends most: x for a body on a floor, y for a fit
+    # along a shaft.
+    zone = [r for r in rows if r["state"] not in ("free", "not a candidate")] or rows
+    spans = {c: max(float(r[c]) for r in zone) - min(float(r[c]) for r in zone)
+             for c in ("x", "y")}
+    along = max(spans, key=spans.get)
+    rows.sort(key=lambda r: float(r[along]))
+    x = [float(r[along]) for r in rows]
     pressure = [float(r["pressure"]) for r in rows]
     traction = [abs(float(r["rt1"])) / float(r["area"]) if float(r["area"]) > 0 else 0.0
                 for r in rows]
@@ -129,7 +137,8 @@ def main():
         margin = 0.5 * max(high - low, 1e-12)
         axis.set_xlim(max(min(x), low - margin), min(max(x), high + margin))
     axisymmetric = scene is not None and scene.axisymmetric
-    axis.set_xlabel("r (x of the axisymmetric section)" if axisymmetric else "x")
+    names = {"x": "r (x of the axisymmetric section)", "y": "z (y of the axisymmetric section)"}
+    axis.set_xlabel(names[along] if axisymmetric else along)
     axis.set_ylabel("traction (force per area)" if axisymmetric else
                     "traction (force per length)")
     axis.set_title(f"{os.path.basename(directory)}, {os.path.basename(path)}")

@@ -83,3 +83,32 @@ set_tests_properties(revolve_section PROPERTIES
 #   3 ranks; without the entry the overlap is refused.
 add_scene_check(press_fit_axisymmetric 3 lame check_press_fit.py OUTPUT
   --shaft-radius 1 --outer-radius 2 --interference 0.001 --tolerance 0.01)
+# - The shipped ball indentation and shrink fit, their runs on 1 and 3
+#   ranks: the indentation's mean pressure within 10 % of Tabor's 2.8 times
+#   the flow stress, the ball off the block at the end and 80 % of the
+#   impression kept; the shrink fit's pressure highest at the hub's ends
+#   and, pushed out, every node of the fit slipping with Coulomb's
+#   |r_t| = mu |r_n| and the push the fit's friction.
+foreach(_scene "ball_indentation_axisymmetric:output-ball-indentation-axisymmetric:indentation:check_indentation.py --radius 1 --depth 0.05"
+               "shrink_fit_axisymmetric:output-shrink-fit-axisymmetric:push_out:check_shrink_fit.py")
+  string(REPLACE ":" ";" _scene "${_scene}")
+  list(GET _scene 0 _name)
+  list(GET _scene 1 _folder)
+  list(GET _scene 2 _check)
+  list(GET _scene 3 _command)
+  separate_arguments(_command)
+  list(GET _command 0 _script)
+  list(REMOVE_AT _command 0)
+  foreach(_variant 1 3)
+    set(_test ${_name}.${_check})
+    set(_fixture scene_${_name})
+    if(_variant EQUAL 3)
+      set(_test ${_name}.mpirun=3.${_check})
+      set(_fixture scene_${_name}_3)
+    endif()
+    add_test(NAME ${_test}
+      COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/${_script}
+        ${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_variant}/${_folder} ${_command})
+    set_tests_properties(${_test} PROPERTIES FIXTURES_REQUIRED ${_fixture})
+  endforeach()
+endforeach()
