@@ -607,9 +607,12 @@ endforeach()
 # A plastic history through a kill and a resume on another rank count, the
 # mesh adapted in every increment: the same residual impression and plastic
 # strains as the uninterrupted run (restart_plastic.sh); also at finite
-# strain, whose history (Cp^-1, alpha) has another size.
+# strain, whose history (Cp^-1, alpha) has another size, and for the
+# shipped axisymmetric ball indentation (the hoop components; its mesh is
+# not adapted).
 add_script_test(restart_plastic restart_plastic 2)
 add_script_test(restart_plastic_finite_strain restart_plastic 2 "finite strain")
+add_script_test(restart_plastic_axisymmetric restart_plastic 2 axisymmetric)
 
 # The uniaxial cube on a mesh adapted in every increment (hanging vertices
 # on the moved top face, the history carried to the children): still the
