@@ -83,14 +83,18 @@ set_tests_properties(revolve_section PROPERTIES
 #   3 ranks; without the entry the overlap is refused.
 add_scene_check(press_fit_axisymmetric 3 lame check_press_fit.py OUTPUT
   --shaft-radius 1 --outer-radius 2 --interference 0.001 --tolerance 0.01)
-# - The shipped ball indentation and shrink fit, their runs on 1 and 3
-#   ranks: the indentation's mean pressure within 10 % of Tabor's 2.8 times
-#   the flow stress, the ball off the block at the end and 80 % of the
-#   impression kept; the shrink fit's pressure highest at the hub's ends
-#   and, pushed out, every node of the fit slipping with Coulomb's
-#   |r_t| = mu |r_n| and the push the fit's friction.
+# - The shipped ball indentation, shrink fit and O-ring, their runs on 1
+#   and 3 ranks: the indentation's mean pressure within 10 % of Tabor's 2.8
+#   times the flow stress, the ball off the block at the end and 80 % of
+#   the impression kept; the shrink fit's pressure highest at the hub's
+#   ends and, pushed out, every node of the fit slipping with Coulomb's
+#   |r_t| = mu |r_n| and the push the fit's friction; the O-ring sealing
+#   (its contact pressure above the fluid's on the bore and the groove),
+#   pushed onto the back wall, and no vertex of it inside the bore or the
+#   shaft.
 foreach(_scene "ball_indentation_axisymmetric:output-ball-indentation-axisymmetric:indentation:check_indentation.py --radius 1 --depth 0.05"
-               "shrink_fit_axisymmetric:output-shrink-fit-axisymmetric:push_out:check_shrink_fit.py")
+               "shrink_fit_axisymmetric:output-shrink-fit-axisymmetric:push_out:check_shrink_fit.py"
+               "o_ring_axisymmetric:output-o-ring-axisymmetric:seal:check_o_ring.py --bore 10.6 --bottom 9 --shaft 10.5 --walls=-1.4,1.4")
   string(REPLACE ":" ";" _scene "${_scene}")
   list(GET _scene 0 _name)
   list(GET _scene 1 _folder)
