@@ -509,10 +509,12 @@ def axisymmetric(root):
     """bench/axisymmetric.py: each run of the ball on a plate, 3D and
     axisymmetric, by kind and local refinements."""
     body = [[r["kind"], r["level"], r["ranks"], thousands(r["d"]), r["force"],
-             r["radius_error_percent"], r["pressure_error_percent"], r["setup_and_solve_s"]]
+             r["radius_error_percent"], r["fitted_radius_error_percent"],
+             r["pressure_error_percent"], r["setup_and_solve_s"]]
             for r in rows(root, "axisymmetric.csv")]
-    return markdown(["kind", "local refinements", "ranks", "d", "P", "radius error %",
-                     "peak pressure error %", "set-up and solve s"], body)
+    return markdown(["kind", "local refinements", "ranks", "d", "P", "radius error % (area)",
+                     "radius error % (fitted)", "peak pressure error %",
+                     "set-up and solve s"], body)
 
 
 TABLES = {

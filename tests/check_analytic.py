@@ -176,6 +176,31 @@ def hertz(scene):
     return P, a, a_hertz, p0, p_hertz
 
 
+def radius_of_profile(scene):
+    """The contact radius (half-width in 2D) of Hertz's profile
+    p0 sqrt(1 - r^2 / a^2) fitted by least squares to the last increment's
+    nodal pressures (p^2 linear in r^2; every node with a pressure). The
+    radius of the contact area moves by up to half a cell with the mesh,
+    most for an axisymmetric section's one line of nodes; the fit takes
+    every node's pressure."""
+    files = sorted(glob.glob(scene.directory + "/contact-*.csv"))
+    if not files:
+        sys.exit("no contact-*.csv: set Postprocess/Visualization/Write csv tables = true")
+    points = []
+    with open(files[-1]) as f:
+        for row in csv.DictReader(f):
+            p = float(row["pressure"])
+            if p > 0:
+                r2 = sum((float(row[c]) - scene.center[i]) ** 2
+                         for i, c in enumerate("xyz"[:scene.dim - 1]))
+                points.append((r2, p * p))
+    n = len(points)
+    sx, sy = sum(x for x, _ in points), sum(y for _, y in points)
+    sxx, sxy = sum(x * x for x, _ in points), sum(x * y for x, y in points)
+    slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    return math.sqrt(-(sy - slope * sx) / n / slope)
+
+
 def pressure_profile_error(scene, a_hertz, p_hertz):
     """The largest difference, over the contact nodes within 0.8 a of the
     centre, between the nodal pressure and Hertz's profile
