@@ -116,3 +116,10 @@ foreach(_scene "ball_indentation_axisymmetric:output-ball-indentation-axisymmetr
     set_tests_properties(${_test} PROPERTIES FIXTURES_REQUIRED ${_fixture})
   endforeach()
 endforeach()
+# - The statistics of an axisymmetric run say that their forces and areas
+#   are totals over the revolution.
+add_test(NAME hertz_axisymmetric.statistics_say_totals
+  COMMAND grep "every force and area a total over the full revolution"
+          ${CMAKE_CURRENT_BINARY_DIR}/scenes/hertz_axisymmetric/1/output-hertz-axisymmetric/statistics)
+set_tests_properties(hertz_axisymmetric.statistics_say_totals PROPERTIES
+  FIXTURES_REQUIRED scene_hertz_axisymmetric)

@@ -193,8 +193,19 @@ namespace FrictionalContact
           columns.push_back(std::move(column));
 
       statistics.add_row(columns);
+      // An axisymmetric run's forces and areas are those of the bodies of
+      // revolution; the note has no colon, so that readers of the "# k:
+      // label" lines pass it by.
+      const std::string note =
+        model.get_body().get_materials().axisymmetric() ?
+          "# Axisymmetric section (x = r), every force and area a total "
+          "over the full revolution (2 pi r included), every pressure per "
+          "area\n" :
+          "";
       if (write_statistics)
-        run_on_root(comm, [&]() { write_file_atomically(statistics_file, statistics.text()); });
+        run_on_root(comm, [&]() {
+          write_file_atomically(statistics_file, note + statistics.text());
+        });
     }
 
 
