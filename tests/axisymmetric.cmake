@@ -8,25 +8,33 @@
 #   the ball on the plate's force within 0.5 % of the 3D scene's
 #   (ball_on_plate.prm, a quarter: its meshes change the force by 0.2 %
 #   from one refinement to the next, bench/axisymmetric.py).
-foreach(_scene "hertz_axisymmetric:output-hertz-axisymmetric"
-               "ball_on_plate_axisymmetric:output-ball-on-plate-axisymmetric")
-  string(REPLACE ":" ";" _scene "${_scene}")
-  list(GET _scene 0 _name)
-  list(GET _scene 1 _folder)
+# add_shipped_scene_check(<scene> <folder> <check> <script> <arguments...>):
+# the test <scene>.<check> (and <scene>.mpirun=3.<check>) runs
+# tests/<script> on what the shipped scene's run on 1 (and 3) ranks of
+# tests/scenes.cmake wrote, OUTPUT in the arguments standing for its
+# output folder <folder>.
+function(add_shipped_scene_check _name _folder _check _script)
   foreach(_variant 1 3)
-    set(_test ${_name}.hertz)
+    set(_test ${_name}.${_check})
     set(_fixture scene_${_name})
     if(_variant EQUAL 3)
-      set(_test ${_name}.mpirun=3.hertz)
+      set(_test ${_name}.mpirun=3.${_check})
       set(_fixture scene_${_name}_3)
     endif()
+    set(_arguments ${ARGN})
+    list(TRANSFORM _arguments REPLACE "^OUTPUT$"
+         "${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_variant}/${_folder}")
     add_test(NAME ${_test}
-      COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py hertz
-        ${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_variant}/${_folder}
-        --radius-tolerance 0.01 --pressure-tolerance 0.02 --profile-tolerance 0.05)
+      COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/${_script} ${_arguments})
     set_tests_properties(${_test} PROPERTIES FIXTURES_REQUIRED ${_fixture})
   endforeach()
-endforeach()
+endfunction()
+add_shipped_scene_check(hertz_axisymmetric output-hertz-axisymmetric hertz
+  check_analytic.py hertz OUTPUT --radius-tolerance 0.01 --pressure-tolerance 0.02
+  --profile-tolerance 0.05)
+add_shipped_scene_check(ball_on_plate_axisymmetric output-ball-on-plate-axisymmetric hertz
+  check_analytic.py hertz OUTPUT --radius-tolerance 0.01 --pressure-tolerance 0.02
+  --profile-tolerance 0.05)
 add_test(NAME ball_on_plate_axisymmetric.same_force_as_3d
   COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/check_analytic.py same-force
     ${CMAKE_CURRENT_BINARY_DIR}/scenes/ball_on_plate_axisymmetric/1/output-ball-on-plate-axisymmetric
@@ -92,30 +100,12 @@ add_scene_check(press_fit_axisymmetric 3 lame check_press_fit.py OUTPUT
 #   (its contact pressure above the fluid's on the bore and the groove),
 #   pushed onto the back wall, and no vertex of it inside the bore or the
 #   shaft.
-foreach(_scene "ball_indentation_axisymmetric:output-ball-indentation-axisymmetric:indentation:check_indentation.py --radius 1 --depth 0.05"
-               "shrink_fit_axisymmetric:output-shrink-fit-axisymmetric:push_out:check_shrink_fit.py"
-               "o_ring_axisymmetric:output-o-ring-axisymmetric:seal:check_o_ring.py --bore 10.6 --bottom 9 --shaft 10.5 --walls=-1.4,1.4")
-  string(REPLACE ":" ";" _scene "${_scene}")
-  list(GET _scene 0 _name)
-  list(GET _scene 1 _folder)
-  list(GET _scene 2 _check)
-  list(GET _scene 3 _command)
-  separate_arguments(_command)
-  list(GET _command 0 _script)
-  list(REMOVE_AT _command 0)
-  foreach(_variant 1 3)
-    set(_test ${_name}.${_check})
-    set(_fixture scene_${_name})
-    if(_variant EQUAL 3)
-      set(_test ${_name}.mpirun=3.${_check})
-      set(_fixture scene_${_name}_3)
-    endif()
-    add_test(NAME ${_test}
-      COMMAND ${PYTHON3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/${_script}
-        ${CMAKE_CURRENT_BINARY_DIR}/scenes/${_name}/${_variant}/${_folder} ${_command})
-    set_tests_properties(${_test} PROPERTIES FIXTURES_REQUIRED ${_fixture})
-  endforeach()
-endforeach()
+add_shipped_scene_check(ball_indentation_axisymmetric output-ball-indentation-axisymmetric
+  indentation check_indentation.py OUTPUT --radius 1 --depth 0.05)
+add_shipped_scene_check(shrink_fit_axisymmetric output-shrink-fit-axisymmetric
+  push_out check_shrink_fit.py OUTPUT)
+add_shipped_scene_check(o_ring_axisymmetric output-o-ring-axisymmetric
+  seal check_o_ring.py OUTPUT --bore 10.6 --bottom 9 --shaft 10.5 --walls=-1.4,1.4)
 # - The statistics of an axisymmetric run say that their forces and areas
 #   are totals over the revolution.
 add_test(NAME hertz_axisymmetric.statistics_say_totals

@@ -23,6 +23,10 @@ fail() { echo "*** $1"; exit 1; }
 rm -rf out-whole out-killed
 killed_after=2 keys=x,y,z displacements=ux,uy,uz
 plastic=equivalent_plastic_strain,epxx,epyy,epzz,epxy,epxz,epyz
+if [ "$kinematics" = axisymmetric ]; then
+  killed_after=6 keys=x,y displacements=ux,uy
+  plastic=equivalent_plastic_strain,epxx,epyy,eptt,epxy
+fi
 for name in whole killed; do
   if [ "$kinematics" = axisymmetric ]; then
     cat > $name.prm <<EOT
@@ -62,10 +66,6 @@ include $source_dir/tests/tables_instead_of_vtu.prm
 EOT
 done
 printf "include killed.prm\nset Resume computation = true\n" > resume.prm
-if [ "$kinematics" = axisymmetric ]; then
-  killed_after=6 keys=x,y displacements=ux,uy
-  plastic=equivalent_plastic_strain,epxx,epyy,eptt,epxy
-fi
 
 "$contact" whole.prm > whole.log 2>&1 &
 whole=$!

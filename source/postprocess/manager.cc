@@ -193,6 +193,8 @@ namespace FrictionalContact
           columns.push_back(std::move(column));
 
       statistics.add_row(columns);
+      if (!write_statistics)
+        return;
       // An axisymmetric run's forces and areas are those of the bodies of
       // revolution; the note has no colon, so that readers of the "# k:
       // label" lines pass it by.
@@ -202,10 +204,9 @@ namespace FrictionalContact
           "over the full revolution (2 pi r included), every pressure per "
           "area\n" :
           "";
-      if (write_statistics)
-        run_on_root(comm, [&]() {
-          write_file_atomically(statistics_file, note + statistics.text());
-        });
+      run_on_root(comm, [&]() {
+        write_file_atomically(statistics_file, note + statistics.text());
+      });
     }
 
 
