@@ -45,8 +45,9 @@ namespace FrictionalContact
       throw InputError(
         "<Contact solver/Method> = " + solver.method_name +
         " is a method for linear elasticity (mu_pi and the second-order cone "
-        "program of the paper), but a body has a nonlinear law (<Material/"
-        "Model> = " + "J2 plasticity): set <Contact solver/Method> = "
+        "program of the paper), but a body is nonlinear (" +
+        body.get_materials().describe_nonlinearity() +
+        "): set <Contact solver/Method> = "
         "semismooth Newton, which solves the internal force's Newton "
         "equations with the contact conditions");
     const double contrast = body.get_materials().largest_modulus_ratio();

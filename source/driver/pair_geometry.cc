@@ -1,58 +1,11 @@
 #include <deal.II/lac/full_matrix.h>
 
-#include <frictional_contact/base/input.h>
 #include <frictional_contact/driver/pair_geometry.h>
 
 #include <deque>
 
 namespace FrictionalContact
 {
-  template <int dim>
-  void
-  PairGeometry<dim>::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Contact");
-    prm.enter_subsection("Pair geometry");
-    prm.declare_entry(
-      "Tolerance",
-      "1e-6",
-      Patterns::Double(0.),
-      "For contact pairs with a body at finite strain, which move within "
-      "an increment: the increment is solved again with the mortar "
-      "geometry (normals, segments, gaps) of where it ended until no "
-      "slave node's unit normal turns by more than this and no gap moves "
-      "by more than this times the largest displacement where it ended.");
-    prm.declare_entry("Maximum passes",
-                      "20",
-                      Patterns::Integer(1),
-                      "Solves of one increment for its pairs' geometry to "
-                      "settle (see Tolerance); an increment that needs more "
-                      "fails (and is cut with <Loading/On failure> = cut "
-                      "increment).");
-    prm.leave_subsection();
-    prm.leave_subsection();
-  }
-
-
-
-  template <int dim>
-  PairGeometry<dim>::PairGeometry(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Contact");
-    prm.enter_subsection("Pair geometry");
-    tolerance  = prm.get_double("Tolerance");
-    max_passes = prm.get_integer("Maximum passes");
-    prm.leave_subsection();
-    prm.leave_subsection();
-    if (!(tolerance > 0))
-      Input::fail("Contact/Pair geometry/Tolerance",
-                  Input::to_text(tolerance),
-                  "a positive number is expected (a change of exactly 0 is "
-                  "never reached in floating point)");
-  }
-
-
-
   namespace
   {
     /// The passes whose differences Anderson's mixing combines.
@@ -140,16 +93,18 @@ namespace FrictionalContact
 
   template <int dim>
   IncrementOutcome<dim>
-  PairGeometry<dim>::solve(
+  solve_with_settled_pair_geometry(
     Model<dim>                                   &model,
     const TrilinosWrappers::MPI::Vector          &u,
     const double                                  t_start,
     const double                                  t_end,
-    const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)> &solve_once) const
+    const std::function<IncrementOutcome<dim>(const WarmStart<dim> *)> &solve_once)
   {
     ContactOperator<dim> &contact = model.get_contact();
     if (!contact.has_pairs())
       return solve_once(nullptr);
+    const double       tolerance  = contact.pair_passes_settings().tolerance;
+    const unsigned int max_passes = contact.pair_passes_settings().max_passes;
 
     // The configuration the increment starts from: the state and the
     // increment of the prescribed displacements.
@@ -234,6 +189,12 @@ namespace FrictionalContact
     return outcome;
   }
 
-  template class PairGeometry<2>;
-  template class PairGeometry<3>;
+  template IncrementOutcome<2>
+  solve_with_settled_pair_geometry(
+    Model<2> &, const TrilinosWrappers::MPI::Vector &, const double, const double,
+    const std::function<IncrementOutcome<2>(const WarmStart<2> *)> &);
+  template IncrementOutcome<3>
+  solve_with_settled_pair_geometry(
+    Model<3> &, const TrilinosWrappers::MPI::Vector &, const double, const double,
+    const std::function<IncrementOutcome<3>(const WarmStart<3> *)> &);
 } // namespace FrictionalContact

@@ -37,7 +37,6 @@ namespace FrictionalContact
     AdaptiveRefinement<dim>::declare_parameters(prm);
     IncrementDriver::declare_parameters(prm);
     IncrementSolver<dim>::declare_parameters(prm);
-    PairGeometry<dim>::declare_parameters(prm);
     Postprocess::Manager<dim>::declare_parameters(prm);
   }
 
@@ -69,7 +68,6 @@ namespace FrictionalContact
     , adaptivity(prm)
     , driver(prm)
     , increment_solver(prm, pcout)
-    , pair_geometry(prm)
     , postprocessors(prm, output_directory, comm)
     , checkpoint(output_directory, comm)
   {
@@ -246,7 +244,7 @@ namespace FrictionalContact
     const double load_factor_start =
       driver.loading().load_factor(driver.start_time(l));
     const auto solve = [&](const WarmStart<dim> *first_start) {
-      return pair_geometry.solve(model, state.u, driver.start_time(l), t,
+      return solve_with_settled_pair_geometry<dim>(model, state.u, driver.start_time(l), t,
                                  [&](const WarmStart<dim> *warm_start) {
         return increment_solver.solve(model,
                                       state,

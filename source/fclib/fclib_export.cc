@@ -225,8 +225,9 @@ namespace FrictionalContact
   {
     if (model.nonlinear() && writes_files())
       throw InputError(
-        "<Postprocess/FCLIB export>: a body has a nonlinear law (<Material/"
-        "Model>), and an FCLIB file holds a linear problem (M = K): export "
+        "<Postprocess/FCLIB export>: a body is nonlinear (" +
+        model.get_materials().describe_nonlinearity() +
+        "), and an FCLIB file holds a linear problem (M = K): export "
         "increments of linear elastic scenes, or remove fclib export from "
         "<Postprocess/List of postprocessors>");
     if (!increments.empty() && *increments.rbegin() > n_increments)

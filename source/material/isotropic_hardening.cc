@@ -1,5 +1,5 @@
 #include <frictional_contact/base/input.h>
-#include <frictional_contact/model/isotropic_hardening.h>
+#include <frictional_contact/material/isotropic_hardening.h>
 
 #include <cmath>
 

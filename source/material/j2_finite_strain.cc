@@ -5,8 +5,8 @@
 // Anand 1990; Eterovic and Bathe 1990; Simo 1992; de Souza Neto, Peric and
 // Owen, Computational Methods for Plasticity, ch. 14). doc/formulation.md
 // says why this one and writes it out.
-#include <frictional_contact/model/j2_plasticity.h>
-#include <frictional_contact/model/spectral_decomposition.h>
+#include <frictional_contact/material/j2_plasticity.h>
+#include <frictional_contact/material/spectral_decomposition.h>
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/model/j2_plasticity.h>
-#include <frictional_contact/model/spectral_decomposition.h>
+#include <frictional_contact/material/j2_plasticity.h>
+#include <frictional_contact/material/spectral_decomposition.h>
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 namespace FrictionalContact
 {

@@ -1,6 +1,6 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include <frictional_contact/model/spectral_decomposition.h>
+#include <frictional_contact/material/spectral_decomposition.h>
 
 namespace FrictionalContact
 {

@@ -73,6 +73,24 @@ namespace FrictionalContact
       "strain\"; doc/performance.md, \"Finite strain against small "
       "strain\"). "
       "Pairs with the rigid tool: <Rigid tool/Geometry at finite strain>.");
+    prm.enter_subsection("Pair geometry");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-6",
+      Patterns::Double(0.),
+      "For contact pairs with a body at finite strain, which move within "
+      "an increment: the increment is solved again with the mortar "
+      "geometry (normals, segments, gaps) of where it ended until no "
+      "slave node's unit normal turns by more than this and no gap moves "
+      "by more than this times the largest displacement where it ended.");
+    prm.declare_entry("Maximum passes",
+                      "20",
+                      Patterns::Integer(1),
+                      "Solves of one increment for its pairs' geometry to "
+                      "settle (see Tolerance); an increment that needs more "
+                      "fails (and is cut with <Loading/On failure> = cut "
+                      "increment).");
+    prm.leave_subsection();
     RigidTool<dim>::declare_parameters(prm);
     prm.enter_subsection("Obstacle");
     PluginRegistry<Obstacle::Interface<dim>>::declare_parameters(
@@ -101,6 +119,15 @@ namespace FrictionalContact
     cones.emplace_back(mu);
     bodies_every_newton_iterate =
       prm.get("Geometry between bodies") == "every Newton iterate";
+    prm.enter_subsection("Pair geometry");
+    pair_passes.tolerance  = prm.get_double("Tolerance");
+    pair_passes.max_passes = prm.get_integer("Maximum passes");
+    prm.leave_subsection();
+    if (!(pair_passes.tolerance > 0))
+      Input::fail("Contact/Pair geometry/Tolerance",
+                  Input::to_text(pair_passes.tolerance),
+                  "a positive number is expected (a change of exactly 0 is "
+                  "never reached in floating point)");
     tool = std::make_unique<RigidTool<dim>>(prm);
     for (const std::string &item :
          Input::split(prm.get("Contact boundaries"), ';'))

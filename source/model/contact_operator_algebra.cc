@@ -369,6 +369,16 @@ namespace FrictionalContact
   ContactOperator<3>::add_frame_stiffness(const std::vector<Tensor<1, 3>> &,
                                           const Vector &,
                                           Vector &) const;
+  template void
+  ContactOperator<2>::add_force_beyond_frames(const std::vector<Tensor<1, 2>> &,
+                                              const std::vector<Tensor<1, 2>> &,
+                                              const double,
+                                              Vector &) const;
+  template void
+  ContactOperator<3>::add_force_beyond_frames(const std::vector<Tensor<1, 3>> &,
+                                              const std::vector<Tensor<1, 3>> &,
+                                              const double,
+                                              Vector &) const;
   template Tensor<1, 2>
   ContactOperator<2>::turning_force(const unsigned int,
                                       const Tensor<1, 2> &,

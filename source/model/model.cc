@@ -115,9 +115,9 @@ namespace FrictionalContact
     response = std::make_unique<BodyResponse<dim>>(*body, *materials, *history);
     if (nonlinear() && (matrix_free || wants_mesh_levels(prm)))
       throw InputError("<Linear solver/Preconditioner> = geometric multigrid "
-                       "(and Matrix-free stiffness) does not serve bodies of "
-                       "nonlinear laws (<Material/Model> = J2 plasticity) yet: "
-                       "set the preconditioner to auto or AMG");
+                       "(and Matrix-free stiffness) does not serve nonlinear "
+                       "bodies (" + materials->describe_nonlinearity() +
+                       ") yet: set the preconditioner to auto or AMG");
     if (matrix_free && materials->any_mean_dilatation())
       throw InputError("<Linear solver/Matrix-free stiffness> does not serve "
                        "B-bar bodies (nearly incompressible materials) yet: "

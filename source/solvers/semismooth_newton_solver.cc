@@ -2,8 +2,9 @@
 
 #include <frictional_contact/base/run_control.h>
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/solvers/semismooth_newton_iteration.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
+
+#include "semismooth_newton_iteration.h"
 
 #include <algorithm>
 #include <limits>

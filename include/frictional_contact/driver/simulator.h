@@ -128,7 +128,6 @@ namespace FrictionalContact
     AdaptiveRefinement<dim>      adaptivity;
     IncrementDriver              driver;
     IncrementSolver<dim>         increment_solver;
-    PairGeometry<dim>            pair_geometry;
     Postprocess::Manager<dim>    postprocessors;
     Checkpoint<dim>              checkpoint;
     std::unique_ptr<TimerOutput> timer;

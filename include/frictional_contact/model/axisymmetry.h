@@ -9,7 +9,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 #include <vector>
 

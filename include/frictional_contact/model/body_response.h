@@ -9,7 +9,7 @@
 #include <frictional_contact/model/cell_matrix_positions.h>
 #include <frictional_contact/model/gradient_contraction.h>
 #include <frictional_contact/model/elastic_body.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 #include <frictional_contact/model/quadrature_history.h>
 #include <frictional_contact/model/reference_gradients.h>
 

@@ -101,6 +101,24 @@ namespace FrictionalContact
       return pair_change;
     }
 
+    /// <Pair geometry>: when the passes of an increment solved again on
+    /// the geometry where it ended (pairs that follow the configuration
+    /// between solves, not within Newton) count as settled.
+    struct PairPasses
+    {
+      /// The largest change of a unit normal, and of a gap over the
+      /// largest displacement where the increment ended, that counts as
+      /// settled.
+      double       tolerance  = 1e-6;
+      unsigned int max_passes = 20;
+    };
+
+    const PairPasses &
+    pair_passes_settings() const
+    {
+      return pair_passes;
+    }
+
     /// Whether a body at finite strain is on either side of a pair (the
     /// same on all ranks): its pairs' geometry moves within an increment.
     bool
@@ -599,6 +617,7 @@ namespace FrictionalContact
     bool                                         any_pair_follows = false;
     /// <Geometry between bodies> is every Newton iterate.
     bool                                         bodies_every_newton_iterate = false;
+    PairPasses                                   pair_passes;
     PairChange                                   pair_change;
     std::unique_ptr<TimeFunction>                rigid_displacement;
     Tensor<1, dim>                               obstacle_shift;

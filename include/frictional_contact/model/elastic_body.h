@@ -11,7 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/model/boundary_conditions.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 #include <frictional_contact/model/volumetric_blocks.h>
 #include <frictional_contact/solvers/elasticity_operator.h>
 #include <frictional_contact/solvers/stiffness_operator.h>

@@ -11,7 +11,7 @@
 #include <frictional_contact/model/contact_operator.h>
 #include <frictional_contact/model/elastic_body.h>
 #include <frictional_contact/solvers/elasticity_operator.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 #include <frictional_contact/model/mesh_refinement.h>
 #include <frictional_contact/model/quadrature_history.h>
 

@@ -23,9 +23,11 @@ namespace FrictionalContact
    * slave vertex in the current configuration: the averaged outward normal,
    * the weight D_jj, the row P_jl = M_jl / D_jj that maps master
    * displacements to the slave node, and the nodal gap
-   * sum_l P_jl n_j . (y_l - x_j). The data is frozen within a solve of an
-   * increment (at finite strain the increment is solved again with the
-   * data of where it ended, PairGeometry). Master faces may live on any rank: their current
+   * sum_l P_jl n_j . (y_l - x_j). At small strain the data is that of
+   * where the increment starts; at finite strain it is taken again at
+   * every Newton iterate, or where each solve ended
+   * (solve_with_settled_pair_geometry()), as <Contact/Geometry between
+   * bodies> says. Master faces may live on any rank: their current
    * vertices are gathered on every rank at each update. The master may
    * also be a rigid tool, whose faces every rank knows and whose
    * displacement is given: then the rows P_jl have no unknowns, and each

@@ -4,7 +4,7 @@
 #include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/distributed/tria.h>
 
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 #include <map>
 #include <vector>

@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 #include <frictional_contact/solvers/volumetric_split.h>
 
 #include <array>

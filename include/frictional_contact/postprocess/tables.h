@@ -5,7 +5,7 @@
 
 #include <frictional_contact/model/body_response.h>
 #include <frictional_contact/model/elastic_body.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <frictional_contact/model/isotropic_hardening.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/isotropic_hardening.h>
+#include <frictional_contact/material/material.h>
 
 namespace FrictionalContact
 {

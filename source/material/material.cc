@@ -1,6 +1,6 @@
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/base/plugins.h>
-#include <frictional_contact/model/material.h>
+#include <frictional_contact/material/material.h>
 
 #include <algorithm>
 #include <cmath>
@@ -379,7 +379,8 @@ namespace FrictionalContact
           name,
           all_bodies);
         materials[id]->parse_parameters(material, own);
-        names[id] = name;
+        names[id]     = name;
+        law_names[id] = law;
         const bool finite_strain = materials[id]->elastic().finite_strain;
         if (finite_strain && !materials[id]->allows_finite_strain())
           Input::fail(material.path_of("Kinematics"), "finite strain",
@@ -452,6 +453,30 @@ namespace FrictionalContact
       if (!material->is_linear() || material->elastic().finite_strain)
         return false;
     return true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Materials<dim>::describe_nonlinearity() const
+  {
+    std::vector<std::string> causes;
+    const auto add = [&causes](const std::string &cause) {
+      if (std::find(causes.begin(), causes.end(), cause) == causes.end())
+        causes.push_back(cause);
+    };
+    for (const auto &[id, material] : materials)
+      {
+        if (!material->is_linear())
+          add("<Material/Model> = " + law_names.at(id));
+        if (material->elastic().finite_strain)
+          add("<Material/Kinematics> = finite strain");
+      }
+    std::string text;
+    for (const std::string &cause : causes)
+      text += (text.empty() ? "" : ", ") + cause;
+    return text;
   }
 
 

@@ -4,10 +4,11 @@
 
 #include <frictional_contact/base/input.h>
 #include <frictional_contact/solvers/progress_rules.h>
-#include <frictional_contact/solvers/semismooth_newton_linearization.h>
-#include <frictional_contact/solvers/semismooth_newton_merit.h>
-#include <frictional_contact/solvers/semismooth_newton_preconditioner.h>
 #include <frictional_contact/solvers/semismooth_newton_solver.h>
+
+#include "semismooth_newton_linearization.h"
+#include "semismooth_newton_merit.h"
+#include "semismooth_newton_preconditioner.h"
 
 #include <algorithm>
 #include <functional>

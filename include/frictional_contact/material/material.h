@@ -419,6 +419,12 @@ namespace FrictionalContact
     bool
     any_finite_strain() const;
 
+    /// What makes the bodies nonlinear, as the entries that say so: for
+    /// example "<Material/Model> = J2 plasticity" or "<Material/Kinematics>
+    /// = finite strain" (empty when all_linear()).
+    std::string
+    describe_nonlinearity() const;
+
     /// The largest Young's modulus of the bodies over the smallest.
     double
     largest_modulus_ratio() const;
@@ -438,6 +444,8 @@ namespace FrictionalContact
   private:
     std::map<types::material_id, std::unique_ptr<MaterialModel<dim>>> materials;
     std::map<types::material_id, std::string>                         names;
+    /// Each body's <Material/Model>.
+    std::map<types::material_id, std::string> law_names;
     /// Of an axisymmetric scene (2D): each body's law in 3D.
     std::map<types::material_id, std::unique_ptr<MaterialModel<3>>> revolved_laws;
   };

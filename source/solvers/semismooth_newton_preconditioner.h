@@ -1,6 +1,6 @@
 #pragma once
 
-#include <frictional_contact/solvers/semismooth_newton_linearization.h>
+#include "semismooth_newton_linearization.h"
 #include <frictional_contact/solvers/shifted_stiffness_solver.h>
 
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <frictional_contact/solvers/semismooth_newton_linearization.h>
+#include "semismooth_newton_linearization.h"
 
 #include <array>
 #include <functional>
