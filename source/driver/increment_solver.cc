@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <frictional_contact/base/input.h>
+#include <frictional_contact/driver/contact_geometry_at_iterates.h>
 #include <frictional_contact/driver/increment_response.h>
 #include <frictional_contact/driver/increment_solver.h>
 
@@ -238,35 +239,15 @@ namespace FrictionalContact
         outcome.problem->nonlinear = outcome.response.get();
         if (warm_start)
           outcome.problem->tolerance = warm_start->tolerance;
-        if (contact.follows_configuration() || contact.pairs_follow_within_newton())
-          {
-            auto increment = std::make_shared<IncrementGeometry>(
-              IncrementGeometry{body, t_start, t_end, start, {}, obstacle_motion});
-            if (contact.pairs_follow_within_newton())
-              {
-                increment->start_ghosted = body.make_ghosted_vector();
-                increment->start_ghosted = start;
-              }
-            outcome.problem->follow_geometry =
-              [&contact = model.get_contact(), &problem = *outcome.problem, increment,
-               mortar = mortar.get(), &load](TrilinosWrappers::MPI::Vector &du,
-                                            std::vector<Tensor<1, dim>>   &r,
-                                            TrilinosWrappers::MPI::Vector &K_du) {
-                IterateInBasis iterate{du, K_du, load};
-                take_contact_geometry(contact, problem, *increment, mortar, iterate, r);
-              };
-            if (contact.mortar_rows_change_within_newton())
-              outcome.problem->pair_frame_turns =
-                [&contact = model.get_contact(), mortar = mortar.get()](
-                  const TrilinosWrappers::MPI::Vector &step,
-                  std::vector<Tensor<1, dim>>         &turns) {
-                  mortar->frame_turns(contact, step, turns);
-                };
-          }
+        std::unique_ptr<ContactGeometryAtIterates<dim>> geometry;
+        if (contact.geometry_follows_iterates())
+          geometry = std::make_unique<ContactGeometryAtIterates<dim>>(
+            model.get_contact(), *outcome.problem, body, mortar.get(), load, start,
+            t_start, t_end, obstacle_motion);
+        outcome.problem->geometry = geometry.get();
         solve_contact(model, state, start, motion_scale, outcome, record_history,
                       timer, warm_start);
-        outcome.problem->follow_geometry  = nullptr;
-        outcome.problem->pair_frame_turns = nullptr;
+        outcome.problem->geometry = nullptr;
         if (!result.converged)
           return outcome;
         if (contact.active())
@@ -478,76 +459,6 @@ namespace FrictionalContact
       rebuild_for_tangent = linear_solver.tangent_rebuild_factor() > 0 &&
                             per_step > linear_solver.tangent_rebuild_factor() *
                                          krylov_per_step_after_build;
-  }
-
-
-
-  template <int dim>
-  void
-  IncrementSolver<dim>::take_contact_geometry(ContactOperator<dim>    &contact,
-                                              IncrementalProblem<dim> &problem,
-                                              const IncrementGeometry &increment,
-                                              MortarBasis<dim>        *mortar,
-                                              const IterateInBasis    &iterate,
-                                              std::vector<Tensor<1, dim>> &r)
-  {
-    // The reactions keep their Cartesian direction.
-    std::vector<Tensor<1, dim>> forces(r.size());
-    for (unsigned int j = 0; j < r.size(); ++j)
-      forces[j] = contact.to_cartesian(j, r[j]);
-    const AffineConstraints<double> &constraints = increment.body.get_constraints();
-    const bool rows_change = contact.mortar_rows_change_within_newton();
-    // The iterate in u (du is in w, which is u where no row changes).
-    TrilinosWrappers::MPI::Vector du_in_u = iterate.du, force;
-    if (rows_change)
-      {
-        // K du as the law gives it (without the geometry's predicted change).
-        mortar->add_geometry_change(iterate.du, iterate.K_du, -1.);
-        mortar->displacement_to_u(iterate.du, du_in_u);
-        constraints.distribute(du_in_u);
-        force = iterate.K_du;
-        mortar->force_to_u(force, iterate.K_du);
-        force = iterate.load;
-        mortar->force_to_u(force, iterate.load);
-      }
-    TrilinosWrappers::MPI::Vector solved = du_in_u;
-    solved += increment.start;
-    if (contact.follows_configuration())
-      contact.follow_configuration(solved);
-    if (contact.pairs_follow_within_newton())
-      {
-        TrilinosWrappers::MPI::Vector ghosted = increment.body.make_ghosted_vector();
-        ghosted = solved;
-        contact.update_pairs(increment.body, ghosted, increment.t_start,
-                             increment.t_end, &increment.start_ghosted);
-      }
-    if (rows_change)
-      {
-        // The same iterate and forces in the basis of the new rows.
-        mortar->follow_rows(increment.body, contact);
-        mortar->displacement_to_w(du_in_u, iterate.du);
-        constraints.set_zero(iterate.du);
-        mortar->follow_reactions(increment.body, contact, forces, iterate.du);
-        force = iterate.K_du;
-        mortar->force_to_w(force, iterate.K_du);
-        force = iterate.load;
-        mortar->force_to_w(force, iterate.load);
-      }
-    // Where the rows follow the iterates, so does the gap as a node
-    // slides: gap_at() is the gap at the iterate, to first order about it.
-    problem.gap_slopes.resize(rows_change ? r.size() : 0);
-    for (unsigned int j = 0; j < r.size(); ++j)
-      {
-        problem.gaps[j]          = contact.gap_at_start(j, increment.start);
-        problem.obstacle_slip[j] = contact.prescribed_slip(j, increment.obstacle_motion);
-        r[j]                     = contact.to_local(j, forces[j]);
-        if (!problem.gap_slopes.empty())
-          {
-            problem.gap_slopes[j] = contact.gap_slope(j);
-            const Tensor<1, dim> u_j = problem.relative_displacement(j, iterate.du);
-            problem.gaps[j] -= problem.gap_slopes[j] * u_j;
-          }
-      }
   }
 
 

@@ -265,12 +265,38 @@ namespace FrictionalContact
 
 
 
+  template <int dim>
+  void
+  ContactOperator<dim>::follow_iterate(const ElasticBody<dim> &body,
+                                       const Vector           &u,
+                                       const double            t_start,
+                                       const double            t_end,
+                                       const Vector           &start_ghosted)
+  {
+    if (follows_configuration())
+      follow_configuration(u);
+    if (pairs_follow_within_newton())
+      {
+        Vector ghosted = body.make_ghosted_vector();
+        ghosted        = u;
+        update_pairs(body, ghosted, t_start, t_end, &start_ghosted);
+      }
+  }
+
+
+
   template Tensor<1, 2>
   ContactOperator<2>::obstacle_displacement(const double) const;
   template void
   ContactOperator<2>::move_obstacle(const Tensor<1, 2> &);
   template void
   ContactOperator<2>::follow_configuration(const Vector &);
+  template void
+  ContactOperator<2>::follow_iterate(const ElasticBody<2> &,
+                                      const Vector &,
+                                      const double,
+                                      const double,
+                                      const Vector &);
   template bool
   ContactOperator<2>::pairs_follow_within_newton() const;
   template bool
@@ -290,6 +316,12 @@ namespace FrictionalContact
   ContactOperator<3>::move_obstacle(const Tensor<1, 3> &);
   template void
   ContactOperator<3>::follow_configuration(const Vector &);
+  template void
+  ContactOperator<3>::follow_iterate(const ElasticBody<3> &,
+                                      const Vector &,
+                                      const double,
+                                      const double,
+                                      const Vector &);
   template bool
   ContactOperator<3>::pairs_follow_within_newton() const;
   template bool

@@ -77,7 +77,7 @@ namespace FrictionalContact
         , scratch(scratch)
         , nonlinear_residual(std::move(nonlinear_residual))
         , frames_turn(problem.contact.frames_follow_configuration() ||
-                      problem.pair_frame_turns)
+                      (problem.geometry && problem.geometry->turns_pair_frames()))
       {
         // The nodes in contact's parts of both ends' residuals, for the
         // reactions the straight line misses (nonlinear laws).
@@ -95,8 +95,8 @@ namespace FrictionalContact
           {
             scratch = du_1;
             scratch -= du_0;
-            if (problem.pair_frame_turns)
-              problem.pair_frame_turns(scratch, step_turns);
+            if (problem.geometry && problem.geometry->turns_pair_frames())
+              problem.geometry->pair_frame_turns(scratch, step_turns);
             else
               problem.contact.normal_turns(scratch, step_turns);
           }

@@ -204,9 +204,9 @@ namespace FrictionalContact
       {
         // Frames that follow the configuration are taken at the iterate,
         // and its residuals with them.
-        if (k > 0 && problem.follow_geometry)
+        if (k > 0 && problem.geometry)
           {
-            problem.follow_geometry(du, r, work.K_du);
+            problem.geometry->follow(du, r, work.K_du);
             contact.apply(r, work.T_r);
             result.residuals = admissible_residuals(
               problem, du, work.K_du, r, work.admissible_r, work.scratch, work.w);

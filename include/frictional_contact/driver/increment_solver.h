@@ -235,26 +235,6 @@ namespace FrictionalContact
                   TimerOutput                         &timer,
                   const WarmStart<dim>                *warm_start);
 
-    /// Where an increment's contact geometry is taken again at each Newton
-    /// iterate: its span, and the configuration it starts from.
-    struct IncrementGeometry
-    {
-      const ElasticBody<dim>       &body;
-      double                        t_start, t_end;
-      TrilinosWrappers::MPI::Vector start;
-      /// start with ghost entries, for the pairs' geometry (empty where
-      /// the pairs do not follow within Newton).
-      TrilinosWrappers::MPI::Vector start_ghosted;
-      Tensor<1, dim>                obstacle_motion;
-    };
-
-    /// The Newton iterate and the vectors in its basis: du, K du (or
-    /// N(du)) and the load.
-    struct IterateInBasis
-    {
-      TrilinosWrappers::MPI::Vector &du, &K_du, &load;
-    };
-
     /**
      * What an increment needs before its solve, timed as "Increment start"
      * for every law: the pairs' basis, p - f_int(u_0) into the load of
@@ -270,25 +250,6 @@ namespace FrictionalContact
                     const double                         load_factor,
                     IncrementOutcome<dim>               &outcome,
                     TimerOutput                         &timer);
-
-    /**
-     * Takes the gaps and frames of @p contact at the iterate (start + du)
-     * into @p problem and expresses @p r in the new frames: the obstacle's
-     * of the candidates that follow the configuration (gaps linearised
-     * there, the tangential motion obstacle_motion in the new frames), and
-     * the pairs' geometry where it follows within Newton
-     * (pairs_follow_within_newton()). Where the mortar rows change with
-     * it, @p mortar takes them and @p iterate is expressed in its new
-     * basis (the same u and forces in u). The Newton method calls it at
-     * each iterate. Collective.
-     */
-    static void
-    take_contact_geometry(ContactOperator<dim>        &contact,
-                          IncrementalProblem<dim>     &problem,
-                          const IncrementGeometry     &increment,
-                          MortarBasis<dim>            *mortar,
-                          const IterateInBasis        &iterate,
-                          std::vector<Tensor<1, dim>> &r);
 
     /// The geometric multigrid of K on the mesh's levels (for
     /// <Linear solver/Preconditioner> = geometric multigrid), given to the

@@ -221,6 +221,29 @@ namespace FrictionalContact
     void
     follow_configuration(const Vector &u);
 
+    /// Whether the contact geometry is taken again at Newton iterates: the
+    /// obstacle's (follows_configuration()) or the pairs'
+    /// (pairs_follow_within_newton()).
+    bool
+    geometry_follows_iterates() const
+    {
+      return follows_configuration() || pairs_follow_within_newton();
+    }
+
+    /**
+     * Takes the geometry that follows the iterates at X + @p u (locally
+     * owned) of an increment from @p t_start to @p t_end: the candidates'
+     * that follow the configuration (follow_configuration()), and the
+     * pairs' where it follows within Newton, their gaps measured at X +
+     * @p start_ghosted (update_pairs()). Collective.
+     */
+    void
+    follow_iterate(const ElasticBody<dim> &body,
+                   const Vector           &u,
+                   const double            t_start,
+                   const double            t_end,
+                   const Vector           &start_ghosted);
+
     bool
     frames_follow_configuration() const override
     {

@@ -4,12 +4,12 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <frictional_contact/solvers/contact_map.h>
+#include <frictional_contact/solvers/iterate_geometry.h>
 #include <frictional_contact/solvers/nonlinear_stiffness.h>
 #include <frictional_contact/solvers/stiffness_operator.h>
 
 #include <cstdint>
 #include <string>
-#include <functional>
 #include <vector>
 
 namespace FrictionalContact
@@ -118,27 +118,10 @@ namespace FrictionalContact
     /// method's. The semismooth Newton method takes it, the others keep
     /// their own.
     double tolerance = 0;
-    /**
-     * Where the frames follow the configuration (finite strain against a
-     * curved obstacle, or contact pairs): takes the gaps, frames and
-     * obstacle_slip of the contact at the iterate du, and expresses the
-     * reactions r in the new frames; where the unknowns' basis changes
-     * with the geometry (mortar rows of two bodies), also du, K du (@p
-     * K_du, N(du) for nonlinear laws) and the load in the new basis.
-     * Empty for fixed frames.
-     */
-    std::function<void(TrilinosWrappers::MPI::Vector &du,
-                       std::vector<Tensor<1, dim>>   &r,
-                       TrilinosWrappers::MPI::Vector &K_du)>
-      follow_geometry;
-
-    /// Where the frames of pairs of two bodies turn within Newton (the
-    /// rows follow the iterates): each node's turn for a step (as
-    /// ContactMap::normal_turns() gives it for an obstacle's frames).
-    /// Empty elsewhere.
-    std::function<void(const TrilinosWrappers::MPI::Vector &step,
-                       std::vector<Tensor<1, dim>>         &turns)>
-      pair_frame_turns;
+    /// Where the frames follow the configuration (finite strain against a
+    /// curved obstacle, or contact pairs): the geometry the Newton method
+    /// takes at each iterate. Null for fixed frames.
+    IterateGeometry<dim> *geometry = nullptr;
 
     /// K du, or N(du) for nonlinear laws (then with @p with_tangent also
     /// the tangent at du as the stiffness).
